@@ -1,0 +1,50 @@
+// Layer: io. Reading domains and meshes, writing meshes, by file extension.
+// Errors: IoError (cannot open / write), InvalidInput ("path:line: problem"), one line each.
+#pragma once
+
+#include <acute/core/domain.h>
+#include <acute/mesh/mesh.h>
+
+#include <functional>
+#include <string>
+
+namespace acute::io {
+
+/// Callback for non-fatal remarks (e.g. "regional attributes ignored"). May be empty.
+using WarningSink = std::function<void(const std::string&)>;
+
+/// Reads a Triangle .poly file (0- or 1-based; a vertex count of 0 reads the sibling .node).
+Domain read_poly(const std::string& path, const WarningSink& warn = {});
+
+/// Reads a CG:SHOP 2025 instance JSON (points, region_boundary, additional_constraints).
+Domain read_cgshop(const std::string& path, const WarningSink& warn = {});
+
+/// Reads a domain by extension: .poly, .json, or a mesh (.off .obj .ply .node/.ele) whose
+/// boundary becomes the segments and whose boundary vertices become the points.
+Domain read_domain(const std::string& path, const WarningSink& warn = {});
+
+/// Checks a domain: finite coordinates in the exact range, indices in range, no duplicate points,
+/// no zero-length or crossing segments. Throws InvalidInput naming the elements (and file).
+void validate_domain(const Domain& domain);
+
+/// Reads a triangle mesh (.off .obj .ply, Triangle .node/.ele). Throws on non-triangle faces,
+/// NaN/inf, out-of-range indices, non-manifold input.
+Mesh read_mesh(const std::string& path, const WarningSink& warn = {});
+
+struct WriteOptions {
+  double min_angle_deg = 30.0;  ///< for SVG colouring
+  double max_angle_deg = 90.0;
+  std::string title;            ///< SVG legend title
+};
+
+/// Writes by extension: .off .obj (17 significant digits), .node/.ele (give either; both written),
+/// .svg. Written atomically (temporary file + rename). Throws IoError.
+void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options = {});
+
+/// SVG picture: triangles, constrained edges bold, bad triangles filled, legend with figures.
+void write_svg(const Mesh& mesh, const std::string& path, const WriteOptions& options = {});
+
+/// Is this extension a mesh format we can read (.off .obj .ply .node .ele)?
+bool is_mesh_path(const std::string& path);
+
+}  // namespace acute::io

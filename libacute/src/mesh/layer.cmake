@@ -1,0 +1,6 @@
+acute_add_layer(mesh
+  SOURCES
+    src/mesh/mesh.cpp
+    src/mesh/quality.cpp
+    src/mesh/check.cpp
+  DEPENDS acute_predicates acute_openmesh)

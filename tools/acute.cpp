@@ -1,0 +1,21 @@
+// acute: make 2D triangle meshes with every angle in [30, 90) degrees, and report on meshes.
+#include "commands/commands.h"
+
+int main(int argc, char** argv) {
+  using namespace acute::cli;
+  CLI::App app{"acute: 2D triangle meshes with no obtuse and no small angles"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("acute 0.1.0"));
+  GlobalOptions global;
+  int exit_code = ExitCode::Ok;
+  add_mesh_command(app, global, exit_code);
+  add_stats_command(app, global, exit_code);
+  add_render_command(app, global, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : ExitCode::InvalidInputCode;
+  }
+  return exit_code;
+}
