@@ -1,6 +1,7 @@
 # Warnings and exactness flags applied per target (nothing global).
 function(acute_set_warnings target)
-  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wno-unused-parameter)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wno-unused-parameter
+    $<$<CXX_COMPILER_ID:GNU>:-Wno-maybe-uninitialized>)
 endfunction()
 
 # Exact arithmetic must not be contracted into FMAs (changes error bounds) nor "fast-math"ed.

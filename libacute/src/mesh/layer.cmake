@@ -3,4 +3,5 @@ acute_add_layer(mesh
     src/mesh/mesh.cpp
     src/mesh/quality.cpp
     src/mesh/check.cpp
+    src/mesh/segments.cpp
   DEPENDS acute_predicates acute_openmesh)

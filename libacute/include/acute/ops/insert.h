@@ -1,0 +1,41 @@
+// Layer: ops. Point location by walking, and point insertion (in a face, on an edge, on a
+// constrained segment) followed by local Delaunay restoration.
+#pragma once
+
+#include <acute/mesh/mesh.h>
+
+#include <vector>
+
+namespace acute {
+
+enum class LocationKind {
+  InFace,    ///< strictly inside face
+  OnEdge,    ///< on the interior of edge
+  OnVertex,  ///< equal to vertex
+  Blocked    ///< the walk reached a boundary or constrained edge (`edge`) that separates p from the start
+};
+
+struct Location {
+  LocationKind kind = LocationKind::Blocked;
+  FaceHandle face;
+  EdgeHandle edge;
+  VertexHandle vertex;
+};
+
+/// Walks from face `start` towards p with exact orientation tests, never crossing a boundary
+/// or constrained edge. \pre start is a valid face
+Location locate(const Mesh& mesh, const Point2& p, FaceHandle start);
+
+/// Inserts p where `locate` finds it and restores the constrained Delaunay property around it.
+/// On a constrained edge the new vertex is VertexKind::OnSegment (the edge halves keep the
+/// segment id). Returns the new vertex (or the existing one when p is a vertex); an invalid
+/// handle when blocked (then `blocked_edge` is set if given).
+VertexHandle insert_point(Mesh& mesh, const Point2& p, FaceHandle start, EdgeHandle* blocked_edge = nullptr);
+
+/// Splits edge eh at p (which should lie on it, e.g. a midpoint rounded to doubles) and restores
+/// the Delaunay property. Constrained edges: the new vertex is OnSegment and p is projected on the
+/// input segment line when a segment table is present. \pre p strictly inside the edge's diamond so
+/// the four new triangles are counter-clockwise (checked; returns invalid handle otherwise).
+VertexHandle split_edge(Mesh& mesh, EdgeHandle eh, const Point2& p);
+
+}  // namespace acute

@@ -1,0 +1,66 @@
+#include <acute/ops/insert.h>
+
+#include "support/builders.h"
+#include "support/mesh_verify.h"
+
+#include <random>
+
+namespace acute {
+
+TEST(Locate, finds_face_edge_and_vertex) {
+  Mesh mesh = test::grid_mesh(3);
+  const FaceHandle start = *mesh.faces().begin();
+  EXPECT_EQ(locate(mesh, Point2(2.2, 2.7), start).kind, LocationKind::InFace);
+  EXPECT_EQ(locate(mesh, Point2(1.5, 1.0), start).kind, LocationKind::OnEdge);
+  const Location at_vertex = locate(mesh, Point2(2, 1), start);
+  ASSERT_EQ(at_vertex.kind, LocationKind::OnVertex);
+  EXPECT_EQ(point2(mesh, at_vertex.vertex), Point2(2, 1));
+  EXPECT_EQ(locate(mesh, Point2(5, 1), start).kind, LocationKind::Blocked);
+}
+
+TEST(InsertPoint, random_points_keep_mesh_valid_and_delaunay) {
+  Mesh mesh = test::grid_mesh(4);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 4.0);
+  for (int i = 0; i < 200; ++i) {
+    const VertexHandle vh = insert_point(mesh, Point2(u(rng), u(rng)), *mesh.faces().begin());
+    ASSERT_TRUE(vh.is_valid()) << "insertion " << i;
+  }
+  EXPECT_MESH_VALID(mesh);
+  EXPECT_MESH_DELAUNAY(mesh);
+  EXPECT_NEAR(test::total_area(mesh), 16.0, 1e-12);
+}
+
+TEST(InsertPoint, on_constrained_boundary_edge_creates_on_segment_vertex) {
+  Mesh mesh = test::grid_mesh(2);
+  const VertexHandle vh = insert_point(mesh, Point2(0.5, 0.0), *mesh.faces().begin());
+  ASSERT_TRUE(vh.is_valid());
+  EXPECT_EQ(mesh.data(vh).kind, VertexKind::OnSegment);
+  EXPECT_EQ(mesh.data(vh).segment, 0);
+  EXPECT_MESH_VALID(mesh);
+}
+
+TEST(SplitEdge, midpoint_of_interior_and_boundary_edges) {
+  Mesh mesh = test::grid_mesh(2);
+  std::vector<EdgeHandle> edges(mesh.edges().begin(), mesh.edges().end());
+  for (auto eh : edges) {
+    const auto h = mesh.halfedge_handle(eh, 0);
+    const Point2 mid = 0.5 * (point2(mesh, mesh.from_vertex_handle(h)) + point2(mesh, mesh.to_vertex_handle(h)));
+    const bool constrained = is_constrained(mesh, eh);
+    const VertexHandle vh = split_edge(mesh, eh, mid);
+    ASSERT_TRUE(vh.is_valid()) << "edge " << eh.idx();
+    EXPECT_EQ(mesh.data(vh).kind, constrained ? VertexKind::OnSegment : VertexKind::Free) << "edge " << eh.idx();
+    EXPECT_MESH_VALID(mesh);
+  }
+  EXPECT_MESH_DELAUNAY(mesh);
+}
+
+TEST(SplitEdge, refuses_point_that_would_invert) {
+  Mesh mesh = test::grid_mesh(1);
+  EdgeHandle diagonal;
+  for (auto eh : mesh.edges())
+    if (!mesh.is_boundary(eh)) diagonal = eh;
+  EXPECT_FALSE(split_edge(mesh, diagonal, Point2(1.5, -0.5)).is_valid());
+}
+
+}  // namespace acute
