@@ -1,0 +1,219 @@
+#include <acute/delaunay/cdt.h>
+
+#include <acute/core/errors.h>
+#include <acute/predicates/predicates.h>
+
+#include "delaunay/triangulation.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+#include <string>
+
+namespace acute {
+
+namespace {
+
+// Exact duplicates merged: `vertex[i]` is the vertex id of input point i; vertices are numbered
+// in the order of their first occurrence, `first[v]` is that input index.
+struct Merged {
+  std::vector<Point2> points;
+  std::vector<int> vertex;
+  std::vector<int> first;
+};
+
+Merged merge_duplicates(const std::vector<Point2>& in) {
+  const std::size_t n = in.size();
+  std::vector<int> idx(n);
+  std::iota(idx.begin(), idx.end(), 0);
+  std::sort(idx.begin(), idx.end(), [&](int a, int b) {
+    const Point2& p = in[static_cast<std::size_t>(a)];
+    const Point2& q = in[static_cast<std::size_t>(b)];
+    if (p.x() != q.x()) return p.x() < q.x();
+    if (p.y() != q.y()) return p.y() < q.y();
+    return a < b;
+  });
+  std::vector<int> rep(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const int i = idx[k];
+    rep[static_cast<std::size_t>(i)] = (k > 0 && in[static_cast<std::size_t>(idx[k - 1])] == in[static_cast<std::size_t>(i)])
+                                           ? rep[static_cast<std::size_t>(idx[k - 1])]
+                                           : i;
+  }
+  Merged m;
+  m.vertex.assign(n, -1);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (rep[i] == static_cast<int>(i)) {
+      m.vertex[i] = static_cast<int>(m.points.size());
+      m.points.push_back(in[i]);
+      m.first.push_back(static_cast<int>(i));
+    } else {
+      m.vertex[i] = m.vertex[static_cast<std::size_t>(rep[i])];
+    }
+  }
+  return m;
+}
+
+std::string point_text(const Point2& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x(), p.y());
+  return buf;
+}
+
+void check_point(const std::string& where, const char* what, std::size_t i, const Point2& p) {
+  if (!predicates::validate_coordinate(p.x()) || !predicates::validate_coordinate(p.y()))
+    throw InvalidInput(where + ": " + what + " " + std::to_string(i) + " has a coordinate that is not finite or out of the exact range " +
+                       point_text(p));
+}
+
+}  // namespace
+
+Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_out) {
+  const std::string where = domain.name.empty() ? std::string("domain") : domain.name;
+  CdtStats stats;
+  const std::size_t n = domain.points.size();
+  for (std::size_t i = 0; i < n; ++i) check_point(where, "point", i, domain.points[i]);
+  for (std::size_t h = 0; h < domain.holes.size(); ++h) check_point(where, "hole", h, domain.holes[h]);
+  for (std::size_t s = 0; s < domain.segments.size(); ++s)
+    for (int e : domain.segments[s])
+      if (e < 0 || static_cast<std::size_t>(e) >= n)
+        throw InvalidInput(where + ": segment " + std::to_string(s) + " uses point " + std::to_string(e) + ", there are " +
+                           std::to_string(n));
+
+  Merged m = merge_duplicates(domain.points);
+  stats.merged_duplicates = n - m.points.size();
+  const std::size_t num_unique = m.points.size();
+  const auto order = detail::brio_hilbert_order(m.points);
+  detail::Triangulation tr(std::move(m.points));
+  tr.split_crossings = options.crossing == CrossingSegments::Split;
+  if (!tr.insert_points(order)) throw InvalidInput(where + ": domain encloses no area (fewer than 3 points or all collinear)");
+
+  for (std::size_t s = 0; s < domain.segments.size(); ++s) {
+    const int a = m.vertex[static_cast<std::size_t>(domain.segments[s][0])];
+    const int b = m.vertex[static_cast<std::size_t>(domain.segments[s][1])];
+    if (a == b) {
+      stats.warnings.push_back("segment " + std::to_string(s) + " has zero length, ignored");
+      continue;
+    }
+    try {
+      tr.insert_segment(a, b, static_cast<int>(s));
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(where + ": " + e.what());
+    }
+  }
+  stats.points_on_segments = tr.points_on_segments;
+  stats.crossings_split = tr.crossings_split;
+
+  // Domain: flood from the outside (ghosts) across unconstrained edges, then from each hole.
+  const int slots = tr.num_slots();
+  std::vector<char> removed(static_cast<std::size_t>(slots), 0);
+  std::vector<int> stack;
+  auto flood = [&](int start) {
+    removed[static_cast<std::size_t>(start)] = 1;
+    stack.push_back(start);
+    while (!stack.empty()) {
+      const int t = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        if (tr.segment(t, i) >= 0) continue;
+        const int nb = tr.tri(t).n[i];
+        if (removed[static_cast<std::size_t>(nb)]) continue;
+        removed[static_cast<std::size_t>(nb)] = 1;
+        stack.push_back(nb);
+      }
+    }
+  };
+  for (int t = 0; t < slots; ++t) {
+    if (!tr.alive(t) || !tr.is_ghost(t) || removed[static_cast<std::size_t>(t)]) continue;
+    if (domain.convex_hull)
+      removed[static_cast<std::size_t>(t)] = 1;  // -c: the hull acts as a segment
+    else
+      flood(t);
+  }
+  for (const Point2& h : domain.holes) {
+    const int t = tr.locate(h);
+    if (tr.is_ghost(t) || removed[static_cast<std::size_t>(t)]) continue;
+    flood(t);
+  }
+
+  // Hand over as an acute::Mesh.
+  const int nv = tr.num_vertices();
+  std::vector<int> vmap(static_cast<std::size_t>(nv), -1);
+  std::size_t nf = 0;
+  for (int t = 0; t < slots; ++t) {
+    if (!tr.alive(t) || removed[static_cast<std::size_t>(t)]) continue;
+    ++nf;
+    for (int v : tr.tri(t).v) vmap[static_cast<std::size_t>(v)] = 0;
+  }
+  if (nf == 0) throw InvalidInput(where + ": domain encloses no area");
+  Mesh mesh;
+  std::size_t used = 0;
+  for (int v : vmap) used += v == 0 ? 1 : 0;
+  mesh.reserve(used, used + nf + 1, nf);
+  for (int v = 0; v < nv; ++v) {
+    if (vmap[static_cast<std::size_t>(v)] < 0) {
+      if (static_cast<std::size_t>(v) < num_unique) ++stats.dropped_points;
+      continue;
+    }
+    const Point2& p = tr.point(v);
+    const VertexHandle vh = mesh.add_vertex(Mesh::Point(p.x(), p.y(), 0.0));
+    vmap[static_cast<std::size_t>(v)] = vh.idx();
+    auto& d = mesh.data(vh);
+    d.kind = VertexKind::Input;
+    if (static_cast<std::size_t>(v) < num_unique) {
+      const int in = m.first[static_cast<std::size_t>(v)];
+      d.input_index = in;
+      if (static_cast<std::size_t>(in) < domain.point_markers.size()) d.marker = domain.point_markers[static_cast<std::size_t>(in)];
+    }
+  }
+  std::vector<char> present(domain.segments.size(), 0);
+  for (int t = 0; t < slots; ++t) {
+    if (!tr.alive(t) || removed[static_cast<std::size_t>(t)]) continue;
+    const auto& tv = tr.tri(t).v;
+    const VertexHandle vh[3] = {VertexHandle(vmap[static_cast<std::size_t>(tv[0])]), VertexHandle(vmap[static_cast<std::size_t>(tv[1])]),
+                                VertexHandle(vmap[static_cast<std::size_t>(tv[2])])};
+    const FaceHandle fh = mesh.add_face(vh[0], vh[1], vh[2]);
+    if (!fh.is_valid()) throw InternalError("build_cdt: OpenMesh refused triangle " + std::to_string(t));
+    if (tr.segment(t, 0) < 0 && tr.segment(t, 1) < 0 && tr.segment(t, 2) < 0) continue;
+    for (auto heh : mesh.fh_range(fh)) {
+      const VertexHandle from = mesh.from_vertex_handle(heh);
+      const int i = from == vh[0] ? 2 : (from == vh[1] ? 0 : 1);  // edge v[i+1] -> v[i+2]
+      const int s = tr.segment(t, i);
+      if (s < 0) continue;
+      auto& ed = mesh.data(mesh.edge_handle(heh));
+      ed.segment = s;
+      ed.marker = static_cast<std::size_t>(s) < domain.segment_markers.size() ? domain.segment_markers[static_cast<std::size_t>(s)] : 0;
+      present[static_cast<std::size_t>(s)] = 1;
+    }
+  }
+  std::size_t dropped_segments = 0;
+  for (std::size_t s = 0; s < present.size(); ++s) {
+    if (present[s] || domain.segments[s][0] == domain.segments[s][1] ||
+        m.vertex[static_cast<std::size_t>(domain.segments[s][0])] == m.vertex[static_cast<std::size_t>(domain.segments[s][1])])
+      continue;
+    if (++dropped_segments <= 5)
+      stats.warnings.push_back("segment " + std::to_string(s) + " has no domain on either side, dropped");
+  }
+  if (dropped_segments > 5)
+    stats.warnings.push_back(std::to_string(dropped_segments) + " segments in all have no domain on either side, dropped");
+  if (stats_out) *stats_out = std::move(stats);
+  return mesh;
+}
+
+std::vector<std::array<int, 3>> delaunay_triangles(const std::vector<Point2>& points) {
+  for (std::size_t i = 0; i < points.size(); ++i) check_point("delaunay_triangles", "point", i, points[i]);
+  Merged m = merge_duplicates(points);
+  const auto order = detail::brio_hilbert_order(m.points);
+  detail::Triangulation tr(std::move(m.points));
+  std::vector<std::array<int, 3>> out;
+  if (!tr.insert_points(order)) return out;
+  out.reserve(static_cast<std::size_t>(tr.num_slots()));
+  for (int t = 0; t < tr.num_slots(); ++t) {
+    if (!tr.alive(t) || tr.is_ghost(t)) continue;
+    const auto& v = tr.tri(t).v;
+    out.push_back({m.first[static_cast<std::size_t>(v[0])], m.first[static_cast<std::size_t>(v[1])], m.first[static_cast<std::size_t>(v[2])]});
+  }
+  return out;
+}
+
+}  // namespace acute
