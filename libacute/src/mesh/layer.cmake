@@ -4,4 +4,5 @@ acute_add_layer(mesh
     src/mesh/quality.cpp
     src/mesh/check.cpp
     src/mesh/segments.cpp
+    src/mesh/geometry.cpp
   DEPENDS acute_predicates acute_openmesh)

@@ -53,11 +53,22 @@ struct QualityReport {
 /// The angles of triangle (a, b, c) at a, b, c in degrees, as atan2(|cross|, dot).
 std::array<double, 3> triangle_angles_deg(const Point2& a, const Point2& b, const Point2& c);
 
-/// Statistics of a mesh; with a domain also Steiner points and forced corners.
+/// Statistics of a mesh; with a domain also Steiner points and forced corners. Faces are read
+/// from their first vertex (the one given first to add_face), as meshcheck reads file order.
+/// Forced corners use the mesh-based test (see below), so they assume the mesh conforms.
 QualityReport measure_quality(const Mesh& mesh, const QualityOptions& options = {}, const Domain* domain = nullptr);
 
-/// Forced corners of a domain: sectors narrower than min_angle_deg between consecutive segments
-/// around an input point, on the domain side.
+/// Forced corners of a domain: sectors narrower than min_angle_deg (less 1e-9) between consecutive
+/// segments around an input point, on the domain side, sorted by angle. The domain is the PSLG as
+/// meshcheck models it (repeated points merged, segments split at input points on them, Triangle
+/// `-p` faces: bounded faces of the segments minus faces holding a hole seed; convex_hull is
+/// ignored). Crossing segments are not supported (validate_domain rejects them).
 std::vector<ForcedCorner> forced_corners(const Domain& domain, double min_angle_deg);
+
+/// Same, deciding "on the domain side" with a mesh of the domain instead: a sector is in the
+/// domain when some triangle corner at the mesh vertex at that point lies in it. Exact and cheap,
+/// but only meaningful for a mesh that conforms to the domain (a point missing from the mesh has
+/// no forced corner). measure_quality uses this one.
+std::vector<ForcedCorner> forced_corners(const Domain& domain, double min_angle_deg, const Mesh& mesh);
 
 }  // namespace acute
