@@ -1,10 +1,38 @@
-// TEMPORARY naive stub, replaced by the adaptive exact implementation.
+// Layer: predicates. orient2d: floating-point filter, then exact expansion evaluation.
 #include <acute/predicates/predicates.h>
+
+#include <cmath>
+
+#include "predicates/expansion.h"
+#include "predicates/filter.h"
+
 namespace acute::predicates {
+
 namespace detail {
+
 double orient2d_naive(const Point2& a, const Point2& b, const Point2& c) {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
 }
+
+// Exact: every difference is an expansion of <= 2 components (one when the subtraction was exact,
+// the common case on grids), so the work adapts to the input without separate stages.
+[[gnu::noinline]] Sign orient2d_exact(const Point2& a, const Point2& b, const Point2& c) {
+  const Expansion<2> bax = diff(b.x(), a.x()), bay = diff(b.y(), a.y());
+  const Expansion<2> cax = diff(c.x(), a.x()), cay = diff(c.y(), a.y());
+  const auto det = difference(product(bax, cay), product(bay, cax));
+  return static_cast<Sign>(det.sign());
+}
+
 }  // namespace detail
-Sign orient2d(const Point2& a, const Point2& b, const Point2& c) { return sign_of(detail::orient2d_naive(a, b, c)); }
+
+Sign orient2d(const Point2& a, const Point2& b, const Point2& c) {
+  const double left = (b.x() - a.x()) * (c.y() - a.y());
+  const double right = (b.y() - a.y()) * (c.x() - a.x());
+  const double det = left - right;
+  const double bound = detail::kOrient2dBound * (std::fabs(left) + std::fabs(right));
+  if (det > bound) return Sign::Positive;
+  if (-det > bound) return Sign::Negative;
+  return detail::orient2d_exact(a, b, c);
+}
+
 }  // namespace acute::predicates

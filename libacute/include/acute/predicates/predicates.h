@@ -46,6 +46,14 @@ namespace detail {
 /// The naive double determinants, for benchmarks and tests only.
 double orient2d_naive(const Point2& a, const Point2& b, const Point2& c);
 double incircle_naive(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
+
+/// The exact stages alone (no filter), so tests can exercise expansion arithmetic on any input.
+Sign orient2d_exact(const Point2& a, const Point2& b, const Point2& c);
+Sign incircle_exact(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
+
+/// Exact sign of (p - apex) . (q - apex): filtered, and the exact stage alone.
+Sign dot_sign(const Point2& apex, const Point2& p, const Point2& q);
+Sign dot_sign_exact(const Point2& apex, const Point2& p, const Point2& q);
 }  // namespace detail
 
 }  // namespace acute::predicates
