@@ -1,0 +1,4 @@
+acute_add_layer(refine
+  SOURCES
+    src/refine/refine.cpp
+  DEPENDS acute_ops)

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Runs the independent referee ../shared/tools/meshcheck on
+#  1. every mesh the tests wrote under BUILD/test-output that has a sibling NAME.meshcheck file holding
+#     the meshcheck arguments for it (e.g. "--domain /path/in.poly --tolerance 1e-10");
+#  2. the CLI on the shared domains (CDT of every classic domain and CG:SHOP instance, and the default
+#     pipeline on the classic domains), when the CLI supports them.
+# Fails on any non-zero verdict. Usage: scripts/check_outputs.sh [BUILD_DIR]
+set -uo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+shared=../shared
+meshcheck="python3 $shared/tools/meshcheck"
+acute=$build/bin/acute
+failures=0
+checked=0
+
+check() {  # check MESH ARGS...
+  local mesh=$1; shift
+  local out
+  if ! out=$($meshcheck "$mesh" "$@" 2>&1); then
+    echo "meshcheck FAILED: $mesh $*"
+    echo "$out" | grep -iE "verdict|fail|error" | head -5
+    failures=$((failures + 1))
+  fi
+  checked=$((checked + 1))
+}
+
+# 1. Meshes written by the tests.
+while IFS= read -r -d '' spec; do
+  mesh=${spec%.meshcheck}
+  for ext in off obj ele; do [ -f "$mesh.$ext" ] && { read -r -a args < "$spec"; check "$mesh.$ext" "${args[@]}"; break; }; done
+done < <(find "$build/test-output" -name '*.meshcheck' -print0 2>/dev/null)
+echo "check_outputs: test meshes checked: $checked, failures: $failures"
+
+# 2. The CLI on the shared domains.
+out=$build/ci-output
+mkdir -p "$out"
+if [ -x "$acute" ] && "$acute" mesh --help 2>/dev/null | grep -q -- "--method"; then
+  n_before=$checked
+  for d in "$shared"/domains/classic/*.poly "$shared"/domains/cgshop2025/instances/*.json; do
+    name=$(basename "${d%.*}")
+    extra=(); [ "$name" = box ] && extra=(--convex-hull)
+    if "$acute" mesh "$d" -o "$out/cdt_$name.off" --method cdt -q "${extra[@]}" 2>"$out/cdt_$name.err"; then
+      [ "$name" = box ] || check "$out/cdt_$name.off" --domain "$d" --tolerance 1e-10
+    else
+      echo "acute mesh --method cdt FAILED on $d: $(head -1 "$out/cdt_$name.err")"; failures=$((failures + 1))
+    fi
+  done
+  echo "check_outputs: CDT runs checked: $((checked - n_before)), failures so far: $failures"
+fi
+
+if [ -x scripts/compare_stats_meshcheck.sh ]; then
+  bash scripts/compare_stats_meshcheck.sh "$acute" "$shared/domains/meshes" || failures=$((failures + 1))
+fi
+
+echo "check_outputs: $((checked - failures)) passed, $failures failed"
+[ "$failures" -eq 0 ]
