@@ -1,0 +1,403 @@
+#include "delaunay/cdt_checks.h"
+#include "delaunay/triangulation.h"
+
+#include <acute/core/errors.h>
+#include <acute/delaunay/cdt.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <random>
+
+namespace fs = std::filesystem;
+using namespace cdt_test;
+using acute::build_cdt;
+using acute::CdtOptions;
+using acute::CdtStats;
+using acute::CrossingSegments;
+
+namespace {
+
+Mesh checked_cdt(const Domain& d, const VerifyOptions& opt, CdtStats* stats = nullptr, CdtOptions o = {}) {
+  Mesh m = build_cdt(d, o, stats);
+  const auto bad = verify_cdt(m, d, opt);
+  EXPECT_TRUE(bad.empty()) << d.name << ":\n" << join(bad);
+  return m;
+}
+
+// Brute-force unconstrained Delaunay check of a triangle list.
+void expect_delaunay(const std::vector<Point2>& pts, const std::vector<std::array<int, 3>>& tris, const std::string& name,
+                     bool brute) {
+  std::map<std::pair<int, int>, int> edges;
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const auto& f = tris[t];
+    ASSERT_EQ(pr::orient2d(pts[f[0]], pts[f[1]], pts[f[2]]), Sign::Positive) << name << " triangle " << t;
+    for (int i = 0; i < 3; ++i) {
+      const int a = f[static_cast<std::size_t>(i)], b = f[static_cast<std::size_t>((i + 1) % 3)];
+      EXPECT_EQ(edges.count({a, b}), 0u) << name << " edge used twice in one direction: " << a << "-" << b;
+      edges[{a, b}] = f[static_cast<std::size_t>((i + 2) % 3)];
+    }
+  }
+  for (const auto& [e, c] : edges) {
+    auto it = edges.find({e.second, e.first});
+    if (it == edges.end()) continue;
+    EXPECT_NE(pr::incircle(pts[e.first], pts[e.second], pts[c], pts[it->second]), Sign::Positive)
+        << name << " edge " << e.first << "-" << e.second << " not locally Delaunay";
+  }
+  if (!brute) return;
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (std::size_t v = 0; v < pts.size(); ++v)
+      EXPECT_NE(pr::incircle(pts[tris[t][0]], pts[tris[t][1]], pts[tris[t][2]], pts[v]), Sign::Positive)
+          << name << " triangle " << t << " has point " << v << " in its circumcircle";
+}
+
+std::vector<Point2> random_points(std::size_t n, std::uint32_t seed, double scale = 1.0) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, scale);
+  std::vector<Point2> p(n);
+  for (auto& q : p) q = Point2(u(rng), u(rng));
+  return p;
+}
+
+std::vector<Point2> grid(int n, double step = 1.0) {
+  std::vector<Point2> p;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) p.emplace_back(i * step, j * step);
+  return p;
+}
+
+std::string out_dir(const std::string& sub) {
+  const fs::path p = fs::path(ACUTE_TEST_OUTPUT_DIR) / "cdt" / sub;
+  fs::create_directories(p);
+  return p.string();
+}
+
+}  // namespace
+
+TEST(Delaunay, random_points_pass_brute_force) {
+  for (std::size_t n : {3u, 10u, 100u, 400u}) {
+    const auto pts = random_points(n, static_cast<std::uint32_t>(n));
+    const auto tris = acute::delaunay_triangles(pts);
+    EXPECT_GT(tris.size(), 0u) << n;
+    expect_delaunay(pts, tris, "random " + std::to_string(n), true);
+  }
+}
+
+TEST(Delaunay, many_random_points_locally_delaunay_with_euler_count) {
+  const auto pts = random_points(20000, 7);
+  const auto tris = acute::delaunay_triangles(pts);
+  expect_delaunay(pts, tris, "random 20000", false);
+  // Euler: 2n - 2 - h triangles; h >= 3.
+  EXPECT_LE(tris.size(), 2 * pts.size() - 5);
+  EXPECT_GE(tris.size(), 2 * pts.size() - 200);
+}
+
+TEST(Delaunay, cocircular_square_grid) {
+  for (int n : {2, 3, 7, 30}) {
+    const auto pts = grid(n);
+    const auto tris = acute::delaunay_triangles(pts);
+    EXPECT_EQ(tris.size(), static_cast<std::size_t>(2 * (n - 1) * (n - 1))) << "grid " << n;
+    expect_delaunay(pts, tris, "grid " + std::to_string(n), n <= 7);
+  }
+}
+
+TEST(Delaunay, collinear_inputs) {
+  std::vector<Point2> line;
+  for (int i = 0; i < 50; ++i) line.emplace_back(i * 0.5, i * 0.25);
+  EXPECT_TRUE(acute::delaunay_triangles(line).empty()) << "all collinear";
+  line.emplace_back(3.0, 10.0);
+  const auto tris = acute::delaunay_triangles(line);
+  EXPECT_EQ(tris.size(), 49u) << "collinear run plus apex";
+  expect_delaunay(line, tris, "collinear run plus apex", true);
+  // Collinear runs on the hull and inside.
+  std::vector<Point2> p;
+  for (int i = 0; i <= 10; ++i) {
+    p.emplace_back(i, 0);
+    p.emplace_back(i, 10);
+    p.emplace_back(0, i);
+    p.emplace_back(10, i);
+    p.emplace_back(i, i);
+  }
+  expect_delaunay(p, acute::delaunay_triangles(p), "collinear runs", true);
+}
+
+TEST(Delaunay, duplicates_are_skipped) {
+  auto pts = random_points(50, 3);
+  const auto copy = pts;
+  for (const auto& q : copy) pts.push_back(q);
+  const auto tris = acute::delaunay_triangles(pts);
+  for (const auto& t : tris)
+    for (int v : t) EXPECT_LT(v, 50) << "triangle uses a later duplicate";
+  expect_delaunay(pts, tris, "duplicates", true);
+}
+
+TEST(Triangulation, structure_valid_after_segments) {
+  const auto pts = random_points(500, 11);
+  acute::detail::Triangulation tr(pts);
+  ASSERT_TRUE(tr.insert_points(acute::detail::brio_hilbert_order(pts)));
+  EXPECT_EQ(tr.validate(), "");
+  tr.insert_segment(0, 1, 0);
+  tr.insert_segment(2, 3, 1);
+  EXPECT_EQ(tr.validate(), "");
+}
+
+TEST(Cdt, square_with_cocircular_grid_and_segments) {
+  Domain d;
+  d.name = "grid+diagonals";
+  d.points = grid(9);
+  auto id = [](int i, int j) { return i * 9 + j; };
+  for (int k = 0; k < 8; ++k) {
+    d.segments.push_back({id(k, 0), id(k + 1, 0)});
+    d.segments.push_back({id(8, k), id(8, k + 1)});
+    d.segments.push_back({id(k, 8), id(k + 1, 8)});
+    d.segments.push_back({id(0, k), id(0, k + 1)});
+  }
+  d.segments.push_back({id(1, 2), id(7, 5)});  // passes through (3,3) and (5,4)
+  d.segments.push_back({id(1, 1), id(7, 7)});  // through 5 grid points, touching the other at (3,3)
+  CdtStats st;
+  checked_cdt(d, {true, 64.0, true}, &st);
+  EXPECT_EQ(st.points_on_segments, 7u) << d.name;  // 5 on the diagonal, (3,3) and (5,4) on the other
+}
+
+TEST(Cdt, points_on_segments_split_them) {
+  Domain d;
+  d.name = "square with collinear boundary points";
+  d.points = {Point2(0, 0), Point2(4, 0), Point2(4, 4), Point2(0, 4), Point2(1, 0), Point2(2, 0), Point2(3, 0), Point2(4, 2), Point2(2, 2)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}};
+  CdtStats st;
+  const Mesh m = checked_cdt(d, {true, 16.0, true}, &st);
+  EXPECT_EQ(st.points_on_segments, 5u) << d.name;  // 3 on the bottom, 1 on the right, 1 on the diagonal
+  int constrained = 0;
+  for (auto eh : m.edges()) constrained += acute::is_constrained(m, eh) ? 1 : 0;
+  EXPECT_EQ(constrained, 4 + 2 + 1 + 1 + 2) << d.name;
+}
+
+TEST(Cdt, nearly_parallel_and_tiny_angle_segments) {
+  Domain d = polygon(rect(0, 0, 10, 10), "nearly parallel");
+  // Fan of segments from (1,1) with tiny angles, and two nearly parallel long segments.
+  const int c = static_cast<int>(d.points.size());
+  d.points.emplace_back(1, 1);
+  for (int k = 1; k <= 6; ++k) {
+    d.points.emplace_back(9, 1 + k * 1e-7);
+    d.segments.push_back({c, static_cast<int>(d.points.size()) - 1});
+  }
+  const int p = static_cast<int>(d.points.size());
+  d.points.emplace_back(0.5, 5);
+  d.points.emplace_back(9.5, 5 + 1e-12);
+  d.points.emplace_back(0.5, 5 + 1e-13);
+  d.points.emplace_back(9.5, 5 + 2e-12);
+  d.segments.push_back({p, p + 1});
+  d.segments.push_back({p + 2, p + 3});
+  checked_cdt(d, {true, 100.0, true});
+}
+
+TEST(Cdt, duplicate_points_merged) {
+  Domain d = polygon(rect(0, 0, 1, 1), "duplicates");
+  d.points.emplace_back(1, 1);    // duplicate of 2
+  d.points.emplace_back(0.5, 0.5);
+  d.points.emplace_back(0.5, 0.5);
+  d.segments.push_back({5, 4});  // segment from a duplicate to a duplicate
+  CdtStats st;
+  const Mesh m = checked_cdt(d, {true, 1.0, true}, &st);
+  EXPECT_EQ(st.merged_duplicates, 2u) << d.name;
+  EXPECT_EQ(m.n_vertices(), 5u) << d.name;
+}
+
+TEST(Cdt, crossing_segments_error_names_both) {
+  Domain d = polygon(rect(0, 0, 4, 4), "cross");
+  d.points.emplace_back(1, 1);
+  d.points.emplace_back(3, 3);
+  d.points.emplace_back(1, 3);
+  d.points.emplace_back(3, 1);
+  d.segments.push_back({4, 5});
+  d.segments.push_back({6, 7});
+  try {
+    build_cdt(d);
+    ADD_FAILURE() << "crossing segments accepted";
+  } catch (const acute::InvalidInput& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("4"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("5"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("cross"), std::string::npos) << msg;
+  }
+  CdtOptions o;
+  o.crossing = CrossingSegments::Split;
+  CdtStats st;
+  const Mesh m = checked_cdt(d, {true, 16.0, true}, &st, o);
+  EXPECT_EQ(st.crossings_split, 1u) << d.name;
+  EXPECT_EQ(m.n_vertices(), 9u) << d.name;
+}
+
+TEST(Cdt, many_crossings_split) {
+  Domain d = polygon(rect(0, 0, 10, 10), "grid of crossing segments");
+  for (int k = 1; k < 10; ++k) {
+    const int b = static_cast<int>(d.points.size());
+    d.points.emplace_back(k + 0.1, 0.5);
+    d.points.emplace_back(k - 0.1, 9.5);
+    d.points.emplace_back(0.5, k + 0.1);
+    d.points.emplace_back(9.5, k - 0.1);
+    d.segments.push_back({b, b + 1});
+    d.segments.push_back({b + 2, b + 3});
+  }
+  CdtOptions o;
+  o.crossing = CrossingSegments::Split;
+  CdtStats st;
+  Mesh m = build_cdt(d, o, &st);
+  EXPECT_EQ(st.crossings_split, 81u) << d.name;
+  VerifyOptions v;
+  v.expected_area = 100.0;
+  // Rounded intersection points: the pieces are not exactly on the input segments, so only check
+  // validity, local Delaunay and area.
+  Domain outline = polygon(rect(0, 0, 10, 10), d.name);
+  const auto bad = verify_cdt(m, outline, v);
+  EXPECT_TRUE(bad.empty()) << join(bad);
+}
+
+TEST(Cdt, holes_nested_loops_and_dangling_segments) {
+  Domain d = polygon(rect(0, 0, 10, 10), "holes and loops");
+  add_loop(d, rect(1, 1, 4, 4));  // hole
+  d.holes.emplace_back(2, 2);
+  add_loop(d, rect(5, 5, 9, 9));  // loop with a loop inside: both filled
+  add_loop(d, rect(6, 6, 8, 8));
+  const int b = static_cast<int>(d.points.size());
+  d.points.emplace_back(1, 6);  // dangling interior segment
+  d.points.emplace_back(3, 8);
+  d.segments.push_back({b, b + 1});
+  d.points.emplace_back(20, 20);  // point outside
+  d.points.emplace_back(30, 20);  // segment outside
+  d.points.emplace_back(30, 25);
+  d.segments.push_back({b + 3, b + 4});
+  d.points.emplace_back(2.5, 2.5);  // point inside the hole
+  CdtStats st;
+  const Mesh m = checked_cdt(d, {true, 100.0 - 9.0, false}, &st);
+  EXPECT_EQ(st.dropped_points, 4u) << d.name;
+  EXPECT_FALSE(st.warnings.empty()) << d.name;
+  int dangling = 0;
+  for (auto eh : m.edges()) dangling += m.data(eh).segment == 16 ? 1 : 0;
+  EXPECT_EQ(dangling, 1) << d.name;
+}
+
+TEST(Cdt, convex_hull_mode_like_triangle_c) {
+  Domain d;
+  d.name = "box (-c)";
+  d.points = {Point2(0, 0), Point2(0, 3), Point2(3, 0), Point2(3, 3), Point2(1, 1), Point2(1, 2), Point2(2, 1), Point2(2, 2)};
+  d.segments = {{0, 1}, {4, 6}, {6, 7}, {7, 5}, {5, 4}};
+  d.holes = {Point2(1.5, 1.5)};
+  d.convex_hull = true;
+  checked_cdt(d, {true, 8.0, true});
+  d.convex_hull = false;
+  EXPECT_THROW(build_cdt(d), acute::InvalidInput) << "-p: only one side is a segment, nothing enclosed except the hole";
+}
+
+TEST(Cdt, empty_domain_rejected) {
+  Domain d;
+  d.name = "collinear";
+  d.points = {Point2(0, 0), Point2(1, 1), Point2(2, 2)};
+  d.segments = {{0, 2}};
+  EXPECT_THROW(build_cdt(d), acute::InvalidInput);
+  Domain e = polygon(rect(0, 0, 1, 1), "all hole");
+  e.holes.emplace_back(0.5, 0.5);
+  EXPECT_THROW(build_cdt(e), acute::InvalidInput);
+}
+
+TEST(Cdt, random_points_with_random_noncrossing_segments) {
+  for (std::size_t n : {1000u, 10000u}) {
+    std::mt19937 rng(static_cast<std::uint32_t>(n));
+    Domain d = polygon(rect(0, 0, 1, 1), "random " + std::to_string(n));
+    const auto pts = random_points(n, static_cast<std::uint32_t>(n + 1));
+    for (const auto& p : pts) d.points.push_back(p);
+    std::uniform_int_distribution<int> pick(4, static_cast<int>(d.points.size()) - 1);
+    std::vector<std::array<int, 2>> segs;
+    const std::size_t want = n / 20;
+    for (std::size_t tries = 0; segs.size() < want && tries < 20 * want; ++tries) {
+      const int a = pick(rng), b = pick(rng);
+      if (a == b || (d.points[a] - d.points[b]).norm() > 0.3) continue;
+      bool ok = true;
+      for (const auto& s : segs) {
+        const auto k = pr::intersect_segments(d.points[a], d.points[b], d.points[s[0]], d.points[s[1]]);
+        if (k == pr::SegmentIntersection::Proper || k == pr::SegmentIntersection::Overlapping ||
+            (k == pr::SegmentIntersection::Touching && a != s[0] && a != s[1] && b != s[0] && b != s[1])) {
+          ok = false;
+          break;
+        }
+      }
+      if (ok) segs.push_back({a, b});
+    }
+    for (const auto& s : segs) d.segments.push_back(s);
+    checked_cdt(d, {n <= 1000, 1.0, true});
+  }
+}
+
+// ---- every shared domain ---------------------------------------------------------------------
+
+namespace {
+
+std::vector<fs::path> files_in(const fs::path& dir, const std::string& suffix) {
+  std::vector<fs::path> out;
+  if (!fs::is_directory(dir)) return out;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    const std::string s = e.path().filename().string();
+    if (s.size() > suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0) out.push_back(e.path());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+TEST(Cdt, classic_domains_are_valid_cdts) {
+  auto files = files_in(fs::path(ACUTE_SHARED_DIR) / "domains" / "classic", ".poly");
+  if (files.empty()) GTEST_SKIP() << "no shared classic domains";
+  const std::string out = out_dir("classic");
+  for (const auto& f : files) {
+    Domain d;
+    ASSERT_TRUE(read_poly_simple(f.string(), d)) << f;
+    d.name = f.stem().string();
+    d.convex_hull = d.name == "box";
+    CdtStats st;
+    Mesh m;
+    try {
+      m = build_cdt(d, {}, &st);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << d.name << ": " << e.what();
+      continue;
+    }
+    const auto bad = verify_cdt(m, d, {m.n_vertices() < 1500, -1, false});
+    EXPECT_TRUE(bad.empty()) << d.name << ":\n" << join(bad);
+    write_off(m, out + "/" + d.name + ".off");
+  }
+}
+
+TEST(Cdt, cgshop_instances_are_valid_cdts) {
+  auto files = files_in(fs::path(ACUTE_SHARED_DIR) / "domains" / "cgshop2025" / "instances", ".instance.json");
+  if (files.empty()) GTEST_SKIP() << "no CG:SHOP instances";
+  EXPECT_EQ(files.size(), 150u);
+  const std::string out = out_dir("cgshop");
+  for (const auto& f : files) {
+    Domain d;
+    ASSERT_TRUE(read_cgshop_simple(f.string(), d)) << f;
+    std::string name = f.filename().string();
+    name = name.substr(0, name.size() - std::string(".instance.json").size());
+    d.name = name;
+    // The region boundary is the first loop of segments.
+    std::vector<int> loop;
+    for (const auto& s : d.segments) {
+      loop.push_back(s[0]);
+      if (s[1] == d.segments.front()[0]) break;
+    }
+    const double area = polygon_area(d, loop);
+    CdtStats st;
+    Mesh m;
+    try {
+      m = build_cdt(d, {}, &st);
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << d.name << ": " << e.what();
+      continue;
+    }
+    EXPECT_EQ(st.dropped_points, 0u) << d.name;
+    const auto bad = verify_cdt(m, d, {true, area, true});
+    EXPECT_TRUE(bad.empty()) << d.name << ":\n" << join(bad);
+    write_off(m, out + "/" + d.name + ".off");
+  }
+}
