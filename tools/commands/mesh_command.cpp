@@ -1,4 +1,138 @@
+// `acute mesh`: mesh a domain (.poly, CG:SHOP .json, or a mesh whose region is the domain).
 #include "commands/commands.h"
+
+#include <acute/core/errors.h>
+#include <acute/io/io.h>
+#include <acute/mesh/quality.h>
+#include <acute/mesher.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <unistd.h>
+
 namespace acute::cli {
-void add_mesh_command(CLI::App& app, const GlobalOptions&, int&) { app.add_subcommand("mesh", "(not yet implemented)"); }
+
+namespace {
+
+struct MeshArgs {
+  std::string input, output, method = "acute", json_path;
+  MeshOptions options;
+  bool convex_hull = false, split_crossings = false, json = false;
+};
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return std::filesystem::exists(b, ec) && std::filesystem::equivalent(a, b, ec);
+}
+
+int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (same_file(args.input, args.output)) throw IoError(args.output + ": refusing to overwrite the input file");
+  io::WarningSink warn = [&](const std::string& w) {
+    if (!global.quiet) std::cerr << "acute: warning: " << w << "\n";
+  };
+  Domain domain = io::read_domain(args.input, warn);
+  domain.convex_hull = domain.convex_hull || args.convex_hull;
+  MeshOptions options = args.options;
+  options.method = parse_method(args.method);
+  options.cdt.crossing = args.split_crossings ? CrossingSegments::Split : CrossingSegments::Error;
+  const bool tty = isatty(STDERR_FILENO) && !global.quiet;
+  if (tty)
+    options.observer = [](const MeshProgress& p) {
+      std::fprintf(stderr, "\r%-8s iteration %5d  bad %8zu", p.phase.c_str(), p.iteration, p.bad);
+      std::fflush(stderr);
+    };
+  MeshResult result;
+  try {
+    result = generate_mesh(domain, options);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(args.input + ": " + e.what());
+  }
+  if (tty) std::fprintf(stderr, "\r%60s\r", "");
+  for (const auto& note : result.notes) warn(note);
+
+  io::WriteOptions write_options;
+  write_options.min_angle_deg = options.min_angle_deg;
+  write_options.max_angle_deg = options.max_angle_deg;
+  write_options.title = domain.name;
+  io::write_mesh(result.mesh, args.output, write_options);
+
+  QualityOptions qopt;
+  qopt.min_angle_deg = options.min_angle_deg;
+  qopt.max_angle_deg = options.max_angle_deg;
+  const QualityReport q = measure_quality(result.mesh, qopt, &domain);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const int code = result.status == MeshStatus::BoundsNotMet ? BoundsNotMet : Ok;
+  if (result.status == MeshStatus::BoundsNotMet && !global.quiet) {
+    std::cerr << "acute: bounds not met: " << result.remaining.size() << " bad triangle(s) remain, e.g.\n";
+    for (std::size_t i = 0; i < result.remaining.size() && i < 5; ++i) {
+      const auto& t = result.remaining[i];
+      std::fprintf(stderr, "  triangle (%.17g, %.17g) (%.17g, %.17g) (%.17g, %.17g): angles %.3f..%.3f\n", t.corners[0].x(),
+                   t.corners[0].y(), t.corners[1].x(), t.corners[1].y(), t.corners[2].x(), t.corners[2].y(), t.min_angle_deg,
+                   t.max_angle_deg);
+    }
+  }
+  if (args.json) {
+    nlohmann::json j;
+    j["input"] = args.input;
+    j["output"] = args.output;
+    j["method"] = args.method;
+    j["status"] = result.status == MeshStatus::Ok ? "ok" : (result.status == MeshStatus::BoundsNotMet ? "bounds_not_met" : "n/a");
+    j["n_vertices"] = q.n_vertices;
+    j["n_triangles"] = q.n_triangles;
+    j["n_steiner"] = q.n_steiner ? nlohmann::json(*q.n_steiner) : nlohmann::json(nullptr);
+    j["min_angle"] = q.min_angle;
+    j["max_angle"] = q.max_angle;
+    j["free_min_angle"] = q.free_min_angle ? nlohmann::json(*q.free_min_angle) : nlohmann::json(nullptr);
+    j["n_obtuse"] = q.n_obtuse;
+    j["n_right"] = q.n_right;
+    j["n_below_min"] = q.n_below_min;
+    j["iterations"] = result.iterations;
+    j["seconds"] = seconds;
+    j["merged_duplicates"] = result.cdt.merged_duplicates;
+    std::cout << j.dump(2) << "\n";
+  } else if (!global.quiet) {
+    std::printf("%s: %zu vertices, %zu triangles, angles %.4f..%.4f deg, %zu obtuse, %zu below %.4g, %d iterations, %.3f s -> %s\n",
+                args.method.c_str(), q.n_vertices, q.n_triangles, q.min_angle, q.max_angle, q.n_obtuse, q.n_below_min,
+                options.min_angle_deg, result.iterations, seconds, args.output.c_str());
+  }
+  return code;
+}
+
+}  // namespace
+
+void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code) {
+  auto args = std::make_shared<MeshArgs>();
+  auto* cmd = app.add_subcommand("mesh", "Mesh a domain (.poly, CG:SHOP .json, .off/.obj/.ply region)");
+  cmd->footer(
+      "Examples:\n"
+      "  acute mesh meshes/A.poly -o A.off                    # acute mesh, every angle in [30, 90)\n"
+      "  acute mesh meshes/A.poly -o A.off --method refine --min-angle 30 --size 0.5\n"
+      "  acute mesh meshes/A.poly -o A.svg --method cdt\n"
+      "Exit codes: 0 ok, 1 bounds not met (best mesh still written), 2 invalid input, 3 I/O error.");
+  cmd->add_option("domain", args->input, "Input domain")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args->output, "Output mesh (.off .obj .node .ele .svg)")->required();
+  cmd->add_option("--method", args->method, "cdt | refine | cvt | acute")->capture_default_str();
+  cmd->add_option("--min-angle", args->options.min_angle_deg, "Smallest allowed angle (degrees)")->capture_default_str();
+  cmd->add_option("--max-angle", args->options.max_angle_deg, "Angles must be strictly below this (degrees)")->capture_default_str();
+  auto* size = cmd->add_option("--size", args->options.size, "Target edge length");
+  cmd->add_option("--vertices", args->options.target_vertices, "Target vertex count")->excludes(size);
+  cmd->add_option("--gradation", args->options.gradation, "Size gradation factor")->capture_default_str();
+  cmd->add_option("--seed", args->options.seed, "Random seed (deterministic output)")->capture_default_str();
+  cmd->add_option("--max-iterations", args->options.max_iterations, "Iteration cap (0: method default)");
+  cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();
+  cmd->add_option("--time-limit", args->options.time_limit_s, "Time limit in seconds (0: none)");
+  cmd->add_flag("--convex-hull", args->convex_hull, "Mesh the convex hull of the points (Triangle -c)");
+  cmd->add_flag("--split-crossings", args->split_crossings, "Split crossing segments instead of failing");
+  cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
+  cmd->add_flag("-q,--quiet", const_cast<GlobalOptions&>(global).quiet, "No output but errors");
+  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "More output");
+  cmd->callback([args, &global, &exit_code] { exit_code = run_guarded([&] { return run_mesh(*args, global); }); });
+}
+
 }  // namespace acute::cli

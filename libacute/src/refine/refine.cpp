@@ -24,9 +24,24 @@ class Refiner {
         off_constant_(0.475 / std::tan(0.5 * params.min_angle_deg * kPi / 180.0)) {}
 
   RefineResult run() {
-    for (auto eh : mesh_.edges())
-      if (is_constrained(mesh_, eh)) segments_.push_back(eh);
-    for (auto fh : mesh_.faces()) faces_.push_back(fh);
+    // Faces re-created by a rollback are not queued: sweep the whole mesh until a sweep finds
+    // nothing to do (or nothing changed).
+    for (std::size_t sweep = 0;; ++sweep) {
+      const std::size_t before = result_.inserted + result_.segment_splits;
+      for (auto fh : mesh_.faces())
+        if (is_bad(fh)) faces_.push_back(fh);
+      for (auto eh : mesh_.edges())
+        if (is_constrained(mesh_, eh) && is_encroached(eh)) segments_.push_back(eh);
+      if (faces_.empty() && segments_.empty()) break;
+      process_queues();
+      if (result_.status == RefineStatus::BudgetExhausted || result_.inserted + result_.segment_splits == before) break;
+    }
+    mesh_.garbage_collection();
+    return result_;
+  }
+
+ private:
+  void process_queues() {
     while (true) {
       if (mesh_.n_vertices() >= params_.max_vertices) {
         result_.status = RefineStatus::BudgetExhausted;
@@ -43,11 +58,8 @@ class Refiner {
       faces_.pop_front();
       if (!mesh_.status(fh).deleted() && is_bad(fh)) split_triangle(fh);
     }
-    mesh_.garbage_collection();
-    return result_;
   }
 
- private:
   bool is_encroached(EdgeHandle eh) const {
     for (int side = 0; side < 2; ++side) {
       const auto heh = mesh_.halfedge_handle(eh, side);
@@ -107,7 +119,7 @@ class Refiner {
   /// shortest edge joins two different segments that meet at a sharp corner (concentric shells).
   bool is_protected(FaceHandle fh, int k) const {
     const auto v = face_vertices(mesh_, fh);
-    if (is_sharp_corner(v[k])) return true;
+    if (is_input(mesh_, v[k]) && corner_sector_deg(fh, v[k]) < params_.min_angle_deg) return true;
     const VertexHandle p = v[(k + 1) % 3], q = v[(k + 2) % 3];
     const auto& dp = mesh_.data(p);
     const auto& dq = mesh_.data(q);
@@ -120,9 +132,36 @@ class Refiner {
       for (const auto& e2 : s2)
         if (e1 == e2) {
           const Point2 d1 = (s1[0] == e1 ? s1[1] : s1[0]) - e1, d2 = (s2[0] == e2 ? s2[1] : s2[0]) - e2;
-          if (d1.normalized().dot(d2.normalized()) > 0.5) return true;
+          if (d1.normalized().dot(d2.normalized()) > cos_min_) return true;
         }
     return false;
+  }
+
+  /// Angle of the sector around vh that contains face fh and is bounded by segments (360 if none).
+  double corner_sector_deg(FaceHandle fh, VertexHandle vh) const {
+    HalfedgeHandle start;  // the outgoing halfedge of vh in fh
+    for (auto heh : mesh_.fh_range(fh))
+      if (mesh_.from_vertex_handle(heh) == vh) start = heh;
+    auto angle_at = [&](HalfedgeHandle out) {
+      const Point2 p = point2(mesh_, vh), a = point2(mesh_, mesh_.to_vertex_handle(out));
+      const Point2 b = point2(mesh_, mesh_.from_vertex_handle(mesh_.prev_halfedge_handle(out)));
+      return std::atan2(std::abs(signed_area2(p, a, b)), (a - p).dot(b - p)) * 180.0 / kPi;
+    };
+    double total = angle_at(start);
+    // Counter-clockwise from start, then clockwise, stopping at constrained or boundary edges.
+    for (HalfedgeHandle h = start;;) {
+      const HalfedgeHandle in = mesh_.prev_halfedge_handle(h);
+      if (is_constrained(mesh_, mesh_.edge_handle(in)) || mesh_.is_boundary(mesh_.edge_handle(in))) break;
+      h = mesh_.opposite_halfedge_handle(in);
+      if (h == start) return 360.0;
+      total += angle_at(h);
+    }
+    for (HalfedgeHandle h = start;;) {
+      if (is_constrained(mesh_, mesh_.edge_handle(h)) || mesh_.is_boundary(mesh_.edge_handle(h))) break;
+      h = mesh_.next_halfedge_handle(mesh_.opposite_halfedge_handle(h));
+      total += angle_at(h);
+    }
+    return total;
   }
 
   Point2 steiner_point(FaceHandle fh) const {
@@ -154,16 +193,20 @@ class Refiner {
     const VertexHandle vh = insert_point(mesh_, c, loc.face, &blocked);
     if (!vh.is_valid()) return;
     // A new point that encroaches a subsegment is taken back; the subsegment is split instead.
-    std::vector<EdgeHandle> encroached;
+    // (Edges are remembered by their ends: the removal may re-create them.)
+    std::vector<std::array<VertexHandle, 2>> encroached;
     for (auto heh : mesh_.voh_range(vh)) {
       if (mesh_.is_boundary(heh)) continue;
-      const EdgeHandle link = mesh_.edge_handle(mesh_.next_halfedge_handle(heh));
-      if (is_constrained(mesh_, link) && is_encroached(link)) encroached.push_back(link);
+      const auto link = mesh_.next_halfedge_handle(heh);
+      if (is_constrained(mesh_, mesh_.edge_handle(link)) && is_encroached(mesh_.edge_handle(link)))
+        encroached.push_back({mesh_.from_vertex_handle(link), mesh_.to_vertex_handle(link)});
     }
     if (!encroached.empty() && remove_vertex(mesh_, vh)) {
       bool split_any = false;
-      for (auto eh : encroached)
-        if (!mesh_.status(eh).deleted() && is_constrained(mesh_, eh)) split_any |= split_segment(eh);
+      for (const auto& ends : encroached) {
+        const auto heh = mesh_.find_halfedge(ends[0], ends[1]);
+        if (heh.is_valid() && is_constrained(mesh_, mesh_.edge_handle(heh))) split_any |= split_segment(mesh_.edge_handle(heh));
+      }
       if (split_any) faces_.push_back(fh);
       return;
     }

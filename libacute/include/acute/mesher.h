@@ -1,0 +1,77 @@
+// Layer: pipeline. One call from a Domain to a mesh: CDT, refinement, CVT, acute repair.
+#pragma once
+
+#include <acute/core/domain.h>
+#include <acute/delaunay/cdt.h>
+#include <acute/mesh/mesh.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace acute {
+
+enum class Method {
+  Cdt,     ///< the bare constrained Delaunay triangulation, no Steiner points
+  Refine,  ///< Delaunay refinement (Ruppert/Chew with off-centres)
+  Cvt,     ///< sampling + CDT + centroidal Voronoi optimisation
+  Acute    ///< Cvt followed by the acute repair (the default)
+};
+
+/// Parses "cdt", "refine", "cvt", "acute". \throws InvalidInput
+Method parse_method(const std::string& name);
+const char* to_string(Method method);
+
+struct MeshProgress {
+  std::string phase;       ///< "cdt", "refine", "cvt", "repair"
+  int iteration = 0;
+  std::size_t bad = 0;     ///< bad triangles left (repair)
+  double energy = 0;       ///< CVT energy
+};
+
+struct MeshOptions {
+  Method method = Method::Acute;
+  double min_angle_deg = 30.0;
+  double max_angle_deg = 90.0;  ///< angles must be strictly below
+  double size = 0;              ///< target edge length (0: graded from the local feature size)
+  std::size_t target_vertices = 0;
+  double gradation = 1.3;
+  unsigned seed = 1;
+  int max_iterations = 0;       ///< 0: the method's default
+  std::size_t max_vertices = 50'000'000;
+  double time_limit_s = 0;      ///< 0: none
+  CdtOptions cdt;
+  std::function<void(const MeshProgress&)> observer;
+};
+
+enum class MeshStatus {
+  Ok,              ///< every angle within the bounds (forced input corners excepted)
+  BoundsNotMet,    ///< the best mesh found still has bad triangles (listed)
+  NotApplicable    ///< methods without angle bounds (cdt, cvt)
+};
+
+struct BadTriangle {
+  std::array<Point2, 3> corners;
+  double min_angle_deg = 0, max_angle_deg = 0;
+};
+
+struct MeshResult {
+  Mesh mesh;
+  MeshStatus status = MeshStatus::NotApplicable;
+  int iterations = 0;
+  std::vector<BadTriangle> remaining;  ///< bad triangles left (first 100)
+  CdtStats cdt;
+  std::vector<std::string> notes;      ///< warnings and remarks for the user
+};
+
+/// Meshes a domain. \throws InvalidInput for an unusable domain or options.
+MeshResult generate_mesh(const Domain& domain, const MeshOptions& options = {});
+
+/// The CDT of a domain with the segment table stored in the mesh (build_cdt + set_segment_table).
+Mesh build_domain_cdt(const Domain& domain, const CdtOptions& options = {}, CdtStats* stats = nullptr);
+
+/// Area enclosed by the domain's mesh (sum of triangle areas of its CDT).
+double mesh_area(const Mesh& mesh);
+
+}  // namespace acute

@@ -1,0 +1,4 @@
+acute_add_layer(pipeline
+  SOURCES
+    src/pipeline/mesher.cpp
+  DEPENDS acute_refine acute_delaunay)

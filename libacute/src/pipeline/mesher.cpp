@@ -1,0 +1,96 @@
+#include <acute/mesher.h>
+
+#include <acute/core/errors.h>
+#include <acute/mesh/geometry.h>
+#include <acute/mesh/segments.h>
+#include <acute/refine/refine.h>
+
+#include <cmath>
+
+namespace acute {
+
+Method parse_method(const std::string& name) {
+  if (name == "cdt") return Method::Cdt;
+  if (name == "refine") return Method::Refine;
+  if (name == "cvt") return Method::Cvt;
+  if (name == "acute") return Method::Acute;
+  throw InvalidInput("unknown method '" + name + "' (expected cdt, refine, cvt or acute)");
+}
+
+const char* to_string(Method method) {
+  switch (method) {
+    case Method::Cdt: return "cdt";
+    case Method::Refine: return "refine";
+    case Method::Cvt: return "cvt";
+    case Method::Acute: return "acute";
+  }
+  return "?";
+}
+
+Mesh build_domain_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats) {
+  Mesh mesh = build_cdt(domain, options, stats);
+  SegmentTable table;
+  table.reserve(domain.segments.size());
+  for (const auto& s : domain.segments) table.push_back({domain.points[static_cast<std::size_t>(s[0])], domain.points[static_cast<std::size_t>(s[1])]});
+  set_segment_table(mesh, std::move(table));
+  return mesh;
+}
+
+double mesh_area(const Mesh& mesh) {
+  double area = 0;
+  for (auto fh : mesh.faces()) {
+    const auto p = face_points(mesh, fh);
+    area += 0.5 * signed_area2(p[0], p[1], p[2]);
+  }
+  return area;
+}
+
+namespace {
+
+void check_options(const MeshOptions& o) {
+  if (!(o.min_angle_deg >= 0) || !(o.max_angle_deg <= 180) || !(o.min_angle_deg < o.max_angle_deg))
+    throw InvalidInput("angle bounds must satisfy 0 <= min < max <= 180");
+  if (o.max_angle_deg <= 60 || o.min_angle_deg >= 60)
+    throw InvalidInput("unsatisfiable angle bounds: every triangle has an angle >= 60 and one <= 60 degrees");
+  if (o.size < 0 || !std::isfinite(o.size)) throw InvalidInput("--size must be a positive number");
+  if (!(o.gradation >= 1.0)) throw InvalidInput("--gradation must be at least 1");
+}
+
+/// Target edge length from --size or --vertices (equilateral density: N = 2A / (sqrt(3) h^2)).
+double target_edge(const MeshOptions& o, double area) {
+  if (o.size > 0) return o.size;
+  if (o.target_vertices > 0) return std::sqrt(2.0 * area / (std::sqrt(3.0) * static_cast<double>(o.target_vertices)));
+  return 0;
+}
+
+}  // namespace
+
+MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
+  check_options(options);
+  MeshResult result;
+  auto notify = [&](const char* phase) {
+    if (options.observer) options.observer(MeshProgress{phase, 0, 0, 0});
+  };
+  notify("cdt");
+  result.mesh = build_domain_cdt(domain, options.cdt, &result.cdt);
+  for (const auto& w : result.cdt.warnings) result.notes.push_back(w);
+  switch (options.method) {
+    case Method::Cdt: break;
+    case Method::Refine: {
+      notify("refine");
+      RefineParams params;
+      params.min_angle_deg = options.min_angle_deg;
+      params.max_edge = target_edge(options, mesh_area(result.mesh));
+      params.max_vertices = options.max_vertices;
+      const RefineResult r = refine(result.mesh, params);
+      if (r.status == RefineStatus::BudgetExhausted) result.notes.push_back("refinement stopped at the vertex budget");
+      break;
+    }
+    case Method::Cvt:
+    case Method::Acute:
+      throw InvalidInput(std::string("method '") + to_string(options.method) + "' is not available yet");
+  }
+  return result;
+}
+
+}  // namespace acute
