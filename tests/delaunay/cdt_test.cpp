@@ -130,6 +130,10 @@ TEST(Delaunay, duplicates_are_skipped) {
   for (const auto& t : tris)
     for (int v : t) EXPECT_LT(v, 50) << "triangle uses a later duplicate";
   expect_delaunay(pts, tris, "duplicates", true);
+  const std::vector<Point2> few = {Point2(0, 0), Point2(0, 0), Point2(0, 0), Point2(1, 0), Point2(1, 0), Point2(0, 1)};
+  const auto one = acute::delaunay_triangles(few);
+  ASSERT_EQ(one.size(), 1u) << "three distinct points among duplicates";
+  for (int v : one[0]) EXPECT_TRUE(v == 0 || v == 3 || v == 5) << "representative " << v;
 }
 
 TEST(Triangulation, structure_valid_after_segments) {

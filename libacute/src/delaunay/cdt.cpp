@@ -14,44 +14,14 @@ namespace acute {
 
 namespace {
 
-// Exact duplicates merged: `vertex[i]` is the vertex id of input point i; vertices are numbered
-// in the order of their first occurrence, `first[v]` is that input index.
-struct Merged {
-  std::vector<Point2> points;
-  std::vector<int> vertex;
-  std::vector<int> first;
-};
-
-Merged merge_duplicates(const std::vector<Point2>& in) {
-  const std::size_t n = in.size();
-  std::vector<int> idx(n);
-  std::iota(idx.begin(), idx.end(), 0);
-  std::sort(idx.begin(), idx.end(), [&](int a, int b) {
-    const Point2& p = in[static_cast<std::size_t>(a)];
-    const Point2& q = in[static_cast<std::size_t>(b)];
-    if (p.x() != q.x()) return p.x() < q.x();
-    if (p.y() != q.y()) return p.y() < q.y();
-    return a < b;
-  });
-  std::vector<int> rep(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const int i = idx[k];
-    rep[static_cast<std::size_t>(i)] = (k > 0 && in[static_cast<std::size_t>(idx[k - 1])] == in[static_cast<std::size_t>(i)])
-                                           ? rep[static_cast<std::size_t>(idx[k - 1])]
-                                           : i;
-  }
-  Merged m;
-  m.vertex.assign(n, -1);
+// For every vertex that was inserted, the smallest input index with that position.
+std::vector<int> first_occurrence(const detail::Triangulation& tr, std::size_t n) {
+  std::vector<int> first(n, -1);
   for (std::size_t i = 0; i < n; ++i) {
-    if (rep[i] == static_cast<int>(i)) {
-      m.vertex[i] = static_cast<int>(m.points.size());
-      m.points.push_back(in[i]);
-      m.first.push_back(static_cast<int>(i));
-    } else {
-      m.vertex[i] = m.vertex[static_cast<std::size_t>(rep[i])];
-    }
+    const auto r = static_cast<std::size_t>(tr.rep(static_cast<int>(i)));
+    if (first[r] < 0) first[r] = static_cast<int>(i);
   }
-  return m;
+  return first;
 }
 
 std::string point_text(const Point2& p) {
@@ -80,17 +50,17 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
         throw InvalidInput(where + ": segment " + std::to_string(s) + " uses point " + std::to_string(e) + ", there are " +
                            std::to_string(n));
 
-  Merged m = merge_duplicates(domain.points);
-  stats.merged_duplicates = n - m.points.size();
-  const std::size_t num_unique = m.points.size();
-  const auto order = detail::brio_hilbert_order(m.points);
-  detail::Triangulation tr(std::move(m.points));
+  // Duplicates are found by the insertion itself (the located triangle has that vertex).
+  detail::Triangulation tr(domain.points);
   tr.split_crossings = options.crossing == CrossingSegments::Split;
-  if (!tr.insert_points(order)) throw InvalidInput(where + ": domain encloses no area (fewer than 3 points or all collinear)");
+  if (!tr.insert_points(detail::brio_hilbert_order(domain.points)))
+    throw InvalidInput(where + ": domain encloses no area (fewer than 3 points or all collinear)");
+  const std::vector<int> first = first_occurrence(tr, n);
+  for (std::size_t i = 0; i < n; ++i) stats.merged_duplicates += tr.rep(static_cast<int>(i)) != static_cast<int>(i) ? 1 : 0;
 
   for (std::size_t s = 0; s < domain.segments.size(); ++s) {
-    const int a = m.vertex[static_cast<std::size_t>(domain.segments[s][0])];
-    const int b = m.vertex[static_cast<std::size_t>(domain.segments[s][1])];
+    const int a = tr.rep(domain.segments[s][0]);
+    const int b = tr.rep(domain.segments[s][1]);
     if (a == b) {
       stats.warnings.push_back("segment " + std::to_string(s) + " has zero length, ignored");
       continue;
@@ -152,7 +122,7 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
   mesh.reserve(used, used + nf + 1, nf);
   for (int v = 0; v < nv; ++v) {
     if (vmap[static_cast<std::size_t>(v)] < 0) {
-      if (static_cast<std::size_t>(v) < num_unique) ++stats.dropped_points;
+      if (static_cast<std::size_t>(v) < n && tr.rep(v) == v) ++stats.dropped_points;
       continue;
     }
     const Point2& p = tr.point(v);
@@ -160,8 +130,8 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
     vmap[static_cast<std::size_t>(v)] = vh.idx();
     auto& d = mesh.data(vh);
     d.kind = VertexKind::Input;
-    if (static_cast<std::size_t>(v) < num_unique) {
-      const int in = m.first[static_cast<std::size_t>(v)];
+    if (static_cast<std::size_t>(v) < n) {
+      const int in = first[static_cast<std::size_t>(v)];
       d.input_index = in;
       if (static_cast<std::size_t>(in) < domain.point_markers.size()) d.marker = domain.point_markers[static_cast<std::size_t>(in)];
     }
@@ -189,7 +159,7 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
   std::size_t dropped_segments = 0;
   for (std::size_t s = 0; s < present.size(); ++s) {
     if (present[s] || domain.segments[s][0] == domain.segments[s][1] ||
-        m.vertex[static_cast<std::size_t>(domain.segments[s][0])] == m.vertex[static_cast<std::size_t>(domain.segments[s][1])])
+        tr.rep(domain.segments[s][0]) == tr.rep(domain.segments[s][1]))
       continue;
     if (++dropped_segments <= 5)
       stats.warnings.push_back("segment " + std::to_string(s) + " has no domain on either side, dropped");
@@ -202,16 +172,15 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
 
 std::vector<std::array<int, 3>> delaunay_triangles(const std::vector<Point2>& points) {
   for (std::size_t i = 0; i < points.size(); ++i) check_point("delaunay_triangles", "point", i, points[i]);
-  Merged m = merge_duplicates(points);
-  const auto order = detail::brio_hilbert_order(m.points);
-  detail::Triangulation tr(std::move(m.points));
+  detail::Triangulation tr(points);
   std::vector<std::array<int, 3>> out;
-  if (!tr.insert_points(order)) return out;
+  if (!tr.insert_points(detail::brio_hilbert_order(points))) return out;
+  const std::vector<int> first = first_occurrence(tr, points.size());
   out.reserve(static_cast<std::size_t>(tr.num_slots()));
   for (int t = 0; t < tr.num_slots(); ++t) {
     if (!tr.alive(t) || tr.is_ghost(t)) continue;
     const auto& v = tr.tri(t).v;
-    out.push_back({m.first[static_cast<std::size_t>(v[0])], m.first[static_cast<std::size_t>(v[1])], m.first[static_cast<std::size_t>(v[2])]});
+    out.push_back({first[static_cast<std::size_t>(v[0])], first[static_cast<std::size_t>(v[1])], first[static_cast<std::size_t>(v[2])]});
   }
   return out;
 }

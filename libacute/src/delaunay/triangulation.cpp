@@ -29,6 +29,8 @@ inline bool on_ray(const Point2& a, const Point2& b, const Point2& u) {
 Triangulation::Triangulation(std::vector<Point2> points) : points_(std::move(points)) {
   vtri_.assign(points_.size(), -1);
   link_.assign(points_.size(), -1);
+  rep_.resize(points_.size());
+  for (std::size_t i = 0; i < rep_.size(); ++i) rep_[i] = static_cast<int>(i);
 }
 
 std::uint32_t Triangulation::rand3() const {
@@ -116,8 +118,13 @@ int Triangulation::locate(const Point2& p, int hint) const {
 
 bool Triangulation::insert_points(const std::vector<int>& order) {
   if (order.size() < 3) return false;
-  int a = order[0], b = order[1];
-  std::size_t k = 2;
+  // First triangle: order[0], the first point different from it, the first point off their line.
+  int a = order[0];
+  std::size_t kb = 1;
+  while (kb < order.size() && point(order[kb]) == point(a)) ++kb;
+  if (kb >= order.size()) return false;
+  int b = order[kb];
+  std::size_t k = kb + 1;
   while (k < order.size() && orient2d(point(a), point(b), point(order[k])) == Sign::Zero) ++k;
   if (k == order.size()) return false;
   const int c = order[k];
@@ -134,8 +141,11 @@ bool Triangulation::insert_points(const std::vector<int>& order) {
   tris_[static_cast<std::size_t>(gc)] = Tri{{b, a, inf}, {gb, ga, t0}};
   vtri_[static_cast<std::size_t>(a)] = vtri_[static_cast<std::size_t>(b)] = vtri_[static_cast<std::size_t>(c)] = t0;
   last_ = t0;
-  for (std::size_t j = 2; j < n; ++j)
-    if (j != k) insert_vertex(order[j], -1, false);
+  for (std::size_t j = 1; j < n; ++j) {
+    if (j == k || j == kb) continue;
+    const int v = order[j];
+    rep_[static_cast<std::size_t>(v)] = insert_vertex(v, -1, false);
+  }
   return true;
 }
 
@@ -144,11 +154,13 @@ int Triangulation::insert_new_point(const Point2& p) {
   vtri_.push_back(-1);
   link_.push_back(-1);
   const int v = static_cast<int>(points_.size()) - 1;
+  rep_.push_back(v);
   const int got = insert_vertex(v, -1, true);
   if (got != v) {
     points_.pop_back();
     vtri_.pop_back();
     link_.pop_back();
+    rep_.pop_back();
   }
   return got;
 }
@@ -508,8 +520,10 @@ std::vector<int> brio_hilbert_order(const std::vector<Point2>& points, std::uint
   }
   constexpr int kOrder = 16;
   const double scale = static_cast<double>((1u << kOrder) - 1) / std::max({maxx - minx, maxy - miny, 1e-300});
-  std::vector<std::pair<std::uint64_t, int>> keyed;
+  // (32-bit Hilbert key << 32 | index), radix-sorted on the key bytes.
+  std::vector<std::uint64_t> keyed, tmp;
   keyed.reserve(n);
+  tmp.resize(n);
   // Rounds [0, n/2^k), ..., [n/4, n/2), [n/2, n), each in Hilbert order.
   std::size_t lo = 0;
   std::size_t hi = n;
@@ -527,10 +541,20 @@ std::vector<int> brio_hilbert_order(const std::vector<Point2>& points, std::uint
       const Point2& p = points[static_cast<std::size_t>(order[i])];
       const auto qx = static_cast<std::uint32_t>((p.x() - minx) * scale);
       const auto qy = static_cast<std::uint32_t>((p.y() - miny) * scale);
-      keyed.emplace_back(hilbert_index(qx, qy, kOrder), order[i]);
+      keyed.push_back((hilbert_index(qx, qy, kOrder) << 32) | static_cast<std::uint32_t>(order[i]));
     }
-    std::sort(keyed.begin(), keyed.end());
-    for (std::size_t i = lo; i < end; ++i) order[i] = keyed[i - lo].second;
+    if (keyed.size() < 1024) {
+      std::sort(keyed.begin(), keyed.end());
+    } else {
+      for (int shift = 32; shift < 64; shift += 8) {
+        std::size_t count[257] = {};
+        for (std::uint64_t x : keyed) ++count[((x >> shift) & 0xFF) + 1];
+        for (int b = 0; b < 256; ++b) count[b + 1] += count[b];
+        for (std::uint64_t x : keyed) tmp[count[(x >> shift) & 0xFF]++] = x;
+        std::copy(tmp.begin(), tmp.begin() + static_cast<std::ptrdiff_t>(keyed.size()), keyed.begin());
+      }
+    }
+    for (std::size_t i = lo; i < end; ++i) order[i] = static_cast<int>(keyed[i - lo] & 0xFFFFFFFFu);
     lo = end;
   }
   return order;

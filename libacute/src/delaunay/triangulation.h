@@ -25,12 +25,14 @@ class Triangulation {
     int n[3];
   };
 
-  /// The points must be pairwise distinct (merge duplicates first).
+  /// The points may repeat: a point equal to an inserted one is not inserted (see rep).
   explicit Triangulation(std::vector<Point2> points);
 
-  /// Inserts the given vertices (indices into the points) in this order.
-  /// Returns false, and builds nothing, when all the points are collinear.
+  /// Inserts the given vertices (indices into the points) in this order. Afterwards rep(v) is
+  /// v, or the vertex holding the same position. Returns false, and builds nothing, when all the
+  /// points are collinear (or fewer than 3 distinct).
   bool insert_points(const std::vector<int>& order);
+  int rep(int v) const { return rep_[static_cast<std::size_t>(v)]; }
 
   /// Adds a new point and inserts it (constraints respected; a point exactly on a constrained
   /// edge splits it). Returns its vertex id, or the id of an existing vertex at that position.
@@ -99,6 +101,7 @@ class Triangulation {
   std::vector<Tri> tris_;
   std::vector<int> seg_;
   std::vector<int> vtri_;
+  std::vector<int> rep_;
   std::vector<int> free_;
   std::vector<unsigned> stamp_;
   unsigned stamp_counter_ = 0;
