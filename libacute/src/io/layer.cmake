@@ -1,10 +1,12 @@
 acute_add_layer(io
   SOURCES
-    src/io/domain_io.cpp
+    src/io/atomic_file.cpp
+    src/io/text_reader.cpp
     src/io/read_poly.cpp
     src/io/read_cgshop.cpp
+    src/io/domain_io.cpp
     src/io/mesh_io.cpp
+    src/io/read_ply.cpp
     src/io/write_svg.cpp
-    src/io/atomic_file.cpp
   DEPENDS acute_mesh)
 target_link_libraries(acute_io PRIVATE nlohmann_json::nlohmann_json)

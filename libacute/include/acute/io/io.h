@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace acute::io {
 
@@ -20,12 +21,32 @@ Domain read_poly(const std::string& path, const WarningSink& warn = {});
 Domain read_cgshop(const std::string& path, const WarningSink& warn = {});
 
 /// Reads a domain by extension: .poly, .json, or a mesh (.off .obj .ply .node/.ele) whose
-/// boundary becomes the segments and whose boundary vertices become the points.
+/// boundary becomes the segments and whose boundary vertices become the points (domain_of_mesh).
+/// A .node file without a sibling .ele is a point set: convex_hull is set.
+/// Note: the readers never set convex_hull otherwise (classic/box.poly is meant for it: the CLI
+/// has a flag).
 Domain read_domain(const std::string& path, const WarningSink& warn = {});
 
 /// Checks a domain: finite coordinates in the exact range, indices in range, no duplicate points,
-/// no zero-length or crossing segments. Throws InvalidInput naming the elements (and file).
+/// no zero-length, repeated, crossing or overlapping segments (exact). Segments may touch, and a
+/// point may lie inside a segment (see find_points_on_segments). O(n log n + k) for typical
+/// inputs. Throws InvalidInput naming the elements (and "source_path: " when set).
 void validate_domain(const Domain& domain);
+
+/// A point lying in the interior of a segment that does not end there. Allowed by validate_domain
+/// (Triangle splits the segment at such a point), but the mesher has to handle it.
+struct PointOnSegment {
+  int point = -1;
+  int segment = -1;
+};
+
+/// Every point lying in the interior of a segment (exact), sorted by segment then point.
+std::vector<PointOnSegment> find_points_on_segments(const Domain& domain);
+
+/// The domain a triangle mesh covers: its boundary edges become segments (one per edge, loop by
+/// loop), its boundary vertices the points (in vertex order; markers kept), and every hole of the
+/// mesh gets a seed point strictly inside it. Deleted elements are ignored.
+Domain domain_of_mesh(const Mesh& mesh);
 
 /// Reads a triangle mesh (.off .obj .ply, Triangle .node/.ele). Throws on non-triangle faces,
 /// NaN/inf, out-of-range indices, non-manifold input.
