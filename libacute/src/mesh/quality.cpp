@@ -419,8 +419,9 @@ QualityReport measure_quality(const Mesh& mesh, const QualityOptions& options, c
       if (!std::binary_search(inputs.begin(), inputs.end(), p, lex_less)) ++steiner;
     }
     r.n_steiner = steiner;
-    const Pslg g(*domain);
-    r.forced_corners = forced_corners_mesh_based(g, options.min_angle_deg, mesh, sorted);
+    // The domain-based test: it agrees with meshcheck even when the mesh is off the segments by
+    // rounding (the mesh-based one then misses corners).
+    r.forced_corners = forced_corners(*domain, options.min_angle_deg);
     for (const auto& fc : r.forced_corners) {
       const VertexHandle vh = find_vertex_at(mesh, sorted, domain->points[fc.point]);
       if (vh.is_valid()) {

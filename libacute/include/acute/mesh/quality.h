@@ -55,7 +55,7 @@ std::array<double, 3> triangle_angles_deg(const Point2& a, const Point2& b, cons
 
 /// Statistics of a mesh; with a domain also Steiner points and forced corners. Faces are read
 /// from their first vertex (the one given first to add_face), as meshcheck reads file order.
-/// Forced corners use the mesh-based test (see below), so they assume the mesh conforms.
+/// Forced corners come from the domain alone (first overload below), as meshcheck finds them.
 QualityReport measure_quality(const Mesh& mesh, const QualityOptions& options = {}, const Domain* domain = nullptr);
 
 /// Forced corners of a domain: sectors narrower than min_angle_deg (less 1e-9) between consecutive
@@ -68,7 +68,7 @@ std::vector<ForcedCorner> forced_corners(const Domain& domain, double min_angle_
 /// Same, deciding "on the domain side" with a mesh of the domain instead: a sector is in the
 /// domain when some triangle corner at the mesh vertex at that point lies in it. Exact and cheap,
 /// but only meaningful for a mesh that conforms to the domain (a point missing from the mesh has
-/// no forced corner). measure_quality uses this one.
+/// no forced corner, and Steiner points rounded off a slanted segment can hide a corner).
 std::vector<ForcedCorner> forced_corners(const Domain& domain, double min_angle_deg, const Mesh& mesh);
 
 }  // namespace acute
