@@ -4,7 +4,9 @@
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/segments.h>
 #include <acute/refine/refine.h>
+#include <acute/repair/repair.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace acute {
@@ -87,8 +89,38 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       break;
     }
     case Method::Cvt:
-    case Method::Acute:
       throw InvalidInput(std::string("method '") + to_string(options.method) + "' is not available yet");
+    case Method::Acute: {
+      // Until the CVT start lands: a Delaunay refinement start at the target size, then the repair.
+      notify("refine");
+      RefineParams rp;
+      rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
+      rp.max_edge = target_edge(options, mesh_area(result.mesh));
+      rp.max_vertices = options.max_vertices;
+      refine(result.mesh, rp);
+      notify("repair");
+      RepairParams params;
+      params.bounds.min_deg = options.min_angle_deg;
+      params.bounds.max_deg = options.max_angle_deg;
+      if (options.max_iterations > 0) params.max_iterations = options.max_iterations;
+      params.max_vertices = options.max_vertices;
+      params.time_limit_s = options.time_limit_s;
+      if (options.observer)
+        params.observer = [&](const RepairProgress& p) { options.observer(MeshProgress{"repair", p.iteration, p.bad, 0}); };
+      const RepairResult r = repair_acute(result.mesh, params);
+      result.iterations = r.iterations;
+      result.status = r.status == RepairStatus::Converged ? MeshStatus::Ok : MeshStatus::BoundsNotMet;
+      for (auto fh : bad_triangles(result.mesh, params.bounds)) {
+        if (result.remaining.size() >= 100) break;
+        BadTriangle t;
+        t.corners = face_points(result.mesh, fh);
+        const auto a = angles_deg(t.corners[0], t.corners[1], t.corners[2]);
+        t.min_angle_deg = *std::min_element(a.begin(), a.end());
+        t.max_angle_deg = *std::max_element(a.begin(), a.end());
+        result.remaining.push_back(t);
+      }
+      break;
+    }
   }
   return result;
 }

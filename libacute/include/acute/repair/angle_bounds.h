@@ -1,0 +1,34 @@
+// Layer: repair. The angle bounds, what makes a triangle bad, and the corners the input forces.
+#pragma once
+
+#include <acute/mesh/mesh.h>
+
+#include <array>
+#include <vector>
+
+namespace acute {
+
+/// Angles must lie in [min_deg, max_deg). `margin_deg` is kept inside both bounds during repair so
+/// that a referee computing angles in floating point agrees with the verdict.
+struct AngleBounds {
+  double min_deg = 30.0;
+  double max_deg = 90.0;
+  double margin_deg = 1e-6;
+};
+
+/// Angles (degrees) of triangle abc at a, b, c.
+std::array<double, 3> angles_deg(const Point2& a, const Point2& b, const Point2& c);
+
+/// Per-vertex flag: the vertex is an input corner with a sector narrower than the min bound
+/// (between consecutive segments, inside the domain). Triangles incident on it are exempt from the
+/// min bound (not from the max bound), as in meshcheck.
+std::vector<bool> forced_corner_vertices(const Mesh& mesh, double min_deg);
+
+/// How far triangle fh is from the bounds: the smallest margin min(angle - min, max - angle) over
+/// its angles, in degrees (negative when bad). `exempt_min` drops the min-bound part.
+double triangle_margin(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds, bool exempt_min);
+
+/// True when fh violates the bounds (margin below bounds.margin_deg).
+bool is_bad_triangle(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds, const std::vector<bool>& forced);
+
+}  // namespace acute

@@ -1,0 +1,47 @@
+// Layer: repair. The acute repair: find clusters of bad triangles and fix them with local operators
+// (split, vertex removal / collapse, flips, relocation) plus smoothing; global sweeps first, then
+// only around what is still bad; until nothing is bad or the budget runs out.
+#pragma once
+
+#include <acute/repair/angle_bounds.h>
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+namespace acute {
+
+struct RepairProgress {
+  int iteration = 0;
+  std::size_t bad = 0;
+  bool global = true;
+};
+
+struct RepairParams {
+  AngleBounds bounds;
+  int max_iterations = 300;
+  int global_iterations = 20;      ///< sweeps over the whole mesh before going local
+  std::size_t max_vertices = 50'000'000;
+  double time_limit_s = 0;         ///< 0: none
+  std::function<void(const RepairProgress&)> observer;
+  std::function<bool()> cancel;    ///< returns true to stop early
+};
+
+enum class RepairStatus { Converged, IterationLimit, TimeLimit, Cancelled, VertexBudget };
+
+struct RepairResult {
+  RepairStatus status = RepairStatus::IterationLimit;
+  int iterations = 0;
+  std::size_t bad_before = 0, bad_after = 0;
+  std::size_t inserted = 0, removed = 0, relocated = 0;
+};
+
+/// Repairs the mesh in place; on return the mesh is the best one seen (fewest bad triangles),
+/// garbage-collected. \pre constrained Delaunay mesh with input vertices and constraints marked
+/// (build_cdt / the CVT) and its segment table set.
+RepairResult repair_acute(Mesh& mesh, const RepairParams& params = {});
+
+/// Bad triangles of a mesh under the bounds (forced corners exempt from the min bound).
+std::vector<FaceHandle> bad_triangles(const Mesh& mesh, const AngleBounds& bounds);
+
+}  // namespace acute

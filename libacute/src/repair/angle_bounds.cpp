@@ -1,0 +1,66 @@
+#include <acute/repair/angle_bounds.h>
+
+#include <acute/mesh/geometry.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace acute {
+
+namespace {
+constexpr double kDeg = 180.0 / 3.14159265358979323846;
+
+double angle_at(const Point2& p, const Point2& a, const Point2& b) {
+  const Point2 u = a - p, v = b - p;
+  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v)) * kDeg;
+}
+}  // namespace
+
+std::array<double, 3> angles_deg(const Point2& a, const Point2& b, const Point2& c) {
+  return {angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)};
+}
+
+std::vector<bool> forced_corner_vertices(const Mesh& mesh, double min_deg) {
+  std::vector<bool> forced(mesh.n_vertices(), false);
+  auto is_wall = [&](HalfedgeHandle out) {  // a spoke bounding a sector
+    return is_constrained(mesh, mesh.edge_handle(out)) || mesh.is_boundary(mesh.opposite_halfedge_handle(out));
+  };
+  for (auto vh : mesh.vertices()) {
+    if (!is_input(mesh, vh)) continue;
+    const Point2 p = point2(mesh, vh);
+    // Every sector starts at a wall spoke with a face on its left; sweep counter-clockwise to the next wall.
+    for (auto start : mesh.voh_range(vh)) {
+      if (mesh.is_boundary(start) || !is_wall(start)) continue;
+      double sector = 0;
+      HalfedgeHandle h = start;
+      for (std::size_t guard = 0; guard < 1024; ++guard) {
+        const HalfedgeHandle back = mesh.prev_halfedge_handle(h);  // ends at vh
+        sector += angle_at(p, point2(mesh, mesh.to_vertex_handle(h)), point2(mesh, mesh.from_vertex_handle(back)));
+        h = mesh.opposite_halfedge_handle(back);
+        if (is_wall(h) || h == start || mesh.is_boundary(h)) break;
+      }
+      if (sector < min_deg - 1e-9) forced[static_cast<std::size_t>(vh.idx())] = true;
+    }
+  }
+  return forced;
+}
+
+double triangle_margin(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds, bool exempt_min) {
+  const auto p = face_points(mesh, fh);
+  const auto a = angles_deg(p[0], p[1], p[2]);
+  const double lo = *std::min_element(a.begin(), a.end()), hi = *std::max_element(a.begin(), a.end());
+  double margin = bounds.max_deg - hi;
+  if (!exempt_min) margin = std::min(margin, lo - bounds.min_deg);
+  return margin;
+}
+
+bool is_bad_triangle(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds, const std::vector<bool>& forced) {
+  bool exempt = false;
+  for (auto vh : mesh.fv_range(fh)) {
+    const auto i = static_cast<std::size_t>(vh.idx());
+    exempt = exempt || (i < forced.size() && forced[i]);
+  }
+  return triangle_margin(mesh, fh, bounds, exempt) < bounds.margin_deg;
+}
+
+}  // namespace acute

@@ -1,0 +1,99 @@
+#include <acute/repair/relocation.h>
+
+#include <acute/mesh/segments.h>
+#include <acute/ops/relocate.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace acute {
+
+namespace {
+
+bool face_exempt(const Mesh& mesh, HalfedgeHandle heh, const std::vector<bool>& forced) {
+  for (auto h = heh, end = heh;;) {
+    const auto i = static_cast<std::size_t>(mesh.to_vertex_handle(h).idx());
+    if (i < forced.size() && forced[i]) return true;
+    h = mesh.next_halfedge_handle(h);
+    if (h == end) return false;
+  }
+}
+
+}  // namespace
+
+double star_margin(const Mesh& mesh, VertexHandle vh, const AngleBounds& bounds, const std::vector<bool>& forced) {
+  double margin = INFINITY;
+  for (auto heh : mesh.voh_range(vh)) {
+    if (mesh.is_boundary(heh)) continue;
+    margin = std::min(margin, triangle_margin(mesh, mesh.face_handle(heh), bounds, face_exempt(mesh, heh, forced)));
+  }
+  return margin;
+}
+
+bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds, const std::vector<bool>& forced) {
+  const auto& data = mesh.data(vh);
+  if (data.kind == VertexKind::Input) return false;
+  const Point2 start = point2(mesh, vh);
+  double mean_edge = 0;
+  int degree = 0;
+  Point2 centroid(0, 0);
+  for (auto heh : mesh.voh_range(vh)) {
+    const Point2 w = point2(mesh, mesh.to_vertex_handle(heh));
+    mean_edge += (w - start).norm();
+    centroid += w;
+    ++degree;
+  }
+  if (degree == 0) return false;
+  mean_edge /= degree;
+  centroid /= degree;
+
+  const bool on_segment = data.kind == VertexKind::OnSegment && data.segment >= 0 &&
+                          static_cast<std::size_t>(data.segment) < segment_table(mesh).size();
+  if (data.kind == VertexKind::OnSegment && !on_segment) return false;
+  Point2 axis(1, 0);
+  if (on_segment) {
+    const auto& ends = segment_endpoints(mesh, data.segment);
+    axis = (ends[1] - ends[0]).normalized();
+  }
+  auto place = [&](const Point2& p) { return on_segment ? project_on_segment(mesh, data.segment, p) : p; };
+
+  const double base = star_margin(mesh, vh, bounds, forced);
+  double best = base;
+  Point2 best_p = start;
+  // Evaluates a candidate (exactly valid stars only) and keeps it when better.
+  auto consider = [&](const Point2& q) {
+    const Point2 p = place(q);
+    if (p == best_p || can_relocate(mesh, vh, p) != OpVerdict::Ok) return false;
+    set_point2(mesh, vh, p);
+    const double m = star_margin(mesh, vh, bounds, forced);
+    set_point2(mesh, vh, best_p);
+    if (m > best + 1e-12) {
+      best = m;
+      best_p = p;
+      set_point2(mesh, vh, p);
+      return true;
+    }
+    return false;
+  };
+
+  if (!on_segment) consider(centroid);
+  // Pattern search: 8 directions (2 along a segment), halving the step when nothing improves.
+  static const double kDirs[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {0.7071067811865476, 0.7071067811865476},
+                                     {-0.7071067811865476, 0.7071067811865476}, {0.7071067811865476, -0.7071067811865476},
+                                     {-0.7071067811865476, -0.7071067811865476}};
+  double step = 0.25 * mean_edge;
+  const double min_step = 1e-4 * mean_edge;
+  for (int it = 0; it < 60 && step > min_step; ++it) {
+    bool improved = false;
+    if (on_segment) {
+      improved = consider(best_p + step * axis) || consider(best_p - step * axis);
+    } else {
+      for (const auto& d : kDirs) improved = consider(best_p + step * Point2(d[0], d[1])) || improved;
+    }
+    if (!improved) step *= 0.5;
+  }
+  set_point2(mesh, vh, best_p);
+  return best_p != start;
+}
+
+}  // namespace acute
