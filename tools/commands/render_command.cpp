@@ -91,7 +91,7 @@ void add_render_command(CLI::App& app, const GlobalOptions&, int& exit_code) {
       "Triangles with an angle below --min-angle or not below --max-angle are filled. With --domain,\n"
       "mesh edges lying on its segments are drawn as constraints.\n\n"
       "Example:\n"
-      "  acute render out.off -o out.svg --domain in.poly --min-angle 30 --max-angle 90");
+      "  acute render out.off -o out.svg --domain in.poly --min-angle 30 --max-angle 90\n");
   sub->add_option("mesh", args->mesh_path, "Triangle mesh (.off .obj .ply .node/.ele)")->required();
   sub->add_option("-o,--output", args->out_path, "Output SVG file")->required();
   sub->add_option("--domain", args->domain_path, "Input domain (.poly, CG:SHOP .json, or a mesh): draws its segments bold");

@@ -186,7 +186,7 @@ void add_stats_command(CLI::App& app, const GlobalOptions&, int& exit_code) {
       "Exit: 0, or 1 when a bound given with --min-angle/--max-angle is violated; 2 bad input, 3 I/O.\n\n"
       "Example:\n"
       "  acute stats out.off --domain in.poly --min-angle 30 --max-angle 90 --histogram\n"
-      "  acute stats out.off --json > stats.json");
+      "  acute stats out.off --json > stats.json\n");
   sub->add_option("mesh", args->mesh_path, "Triangle mesh (.off .obj .ply .node/.ele)")->required();
   sub->add_option("--domain", args->domain_path, "Input domain (.poly, CG:SHOP .json, or a mesh)");
   sub->add_flag("--json", args->json, "Print one JSON object");
