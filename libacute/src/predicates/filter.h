@@ -11,7 +11,11 @@
 //   orient2d and dot products: k = 4 (2 differences, 1 product, 1 sum), d = 2, r = 2:
 //     gamma_4 / (1 - u)^5 = 4u + 36u^2 + O(u^3)            ->  C = (4 + 64u) u
 //   incircle: k = 11 (2+1+1 for the lift, 2+1+1 for the 2x2 minor, 1 product, 2 final sums),
-//     d = 4, r = 7: gamma_11 / (1 - u)^12 = 11u + 253u^2 + O(u^3) ->  C = (11 + 512u) u
+//     d = 4. perm is replaced by its upper bound P = alift*blift + alift*clift + blift*clift
+//     (AM-GM, see incircle.cpp). A lift in exact differences is <= its double value / (1 - u)^4
+//     (2 roundings of the differences, 2 of the evaluation), so P <= P_fp / (1 - u)^(8 + 3),
+//     3 for evaluating P; with the final product:
+//     gamma_11 / (1 - u)^12 = 11u + 253u^2 + O(u^3)           ->  C = (11 + 512u) u
 #pragma once
 
 namespace acute::predicates::detail {

@@ -30,8 +30,9 @@ Sign orient2d(const Point2& a, const Point2& b, const Point2& c) {
   const double right = (b.y() - a.y()) * (c.x() - a.x());
   const double det = left - right;
   const double bound = detail::kOrient2dBound * (std::fabs(left) + std::fabs(right));
-  if (det > bound) return Sign::Positive;
-  if (-det > bound) return Sign::Negative;
+  // Branch-free sign when certified: the only branch (to the exact stage) is almost never taken,
+  // so it predicts well even when the signs themselves are random.
+  if (std::fabs(det) > bound) return static_cast<Sign>(1 - 2 * static_cast<int>(std::signbit(det)));
   return detail::orient2d_exact(a, b, c);
 }
 

@@ -22,8 +22,7 @@ Sign dot_sign(const Point2& apex, const Point2& p, const Point2& q) {
   const double right = (p.y() - apex.y()) * (q.y() - apex.y());
   const double dot = left + right;
   const double bound = kDot2dBound * (std::fabs(left) + std::fabs(right));
-  if (dot > bound) return Sign::Positive;
-  if (-dot > bound) return Sign::Negative;
+  if (std::fabs(dot) > bound) return static_cast<Sign>(1 - 2 * static_cast<int>(std::signbit(dot)));  // as in orient2d
   return dot_sign_exact(apex, p, q);
 }
 
