@@ -1,6 +1,7 @@
 #include "io/io_test_util.h"
 
 #include <acute/io/io.h>
+#include <acute/predicates/predicates.h>
 
 #include <gtest/gtest.h>
 
@@ -181,4 +182,24 @@ TEST(ReadDomain, point_set_node_file_means_convex_hull) {
   EXPECT_EQ(d.points.size(), 3u);
   EXPECT_TRUE(d.segments.empty());
   EXPECT_TRUE(d.convex_hull) << path;
+}
+
+TEST(ReadDomain, hole_seed_avoids_an_island_inside_the_hole) {
+  // A square ring [0,6]^2 minus [1,5]^2 with a triangular island in the hole, close to the corner
+  // (1,1) where the seed search starts.
+  const std::string path = test::output("ring_with_island.off");
+  std::ofstream(path) << "OFF\n11 9 0\n0 0 0\n6 0 0\n6 6 0\n0 6 0\n1 1 0\n5 1 0\n5 5 0\n1 5 0\n"
+                         "1.5 1.2 0\n3 1.5 0\n1.8 3 0\n"
+                         "3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n3 8 9 10\n";
+  const Domain d = io::read_domain(path);
+  EXPECT_EQ(d.points.size(), 11u);
+  EXPECT_EQ(d.segments.size(), 11u);
+  ASSERT_EQ(d.holes.size(), 1u) << path << ": the island's outer loop is not a hole";
+  const Point2 s = d.holes[0];
+  EXPECT_TRUE(s.x() > 1 && s.x() < 5 && s.y() > 1 && s.y() < 5) << path << ": seed " << s.transpose();
+  const Point2 tri[3] = {Point2(1.5, 1.2), Point2(3, 1.5), Point2(1.8, 3)};
+  int inside = 0;
+  for (int i = 0; i < 3; ++i)
+    inside += predicates::orient2d(tri[i], tri[(i + 1) % 3], s) != Sign::Negative;
+  EXPECT_LT(inside, 3) << path << ": seed " << s.transpose() << " is in the island";
 }

@@ -163,7 +163,8 @@ Mesh read_ply(const std::string& path, const WarningSink& warn) {
   std::unique_ptr<LineReader> ascii;
   if (format == Format::Ascii) {
     ascii = std::make_unique<LineReader>(path);
-    for (int i = 0; i < line; ++i) ascii->next();  // header lines have tokens
+    while (ascii->line() < line && ascii->next()) {
+    }  // stops on the end_header line (blank header lines are skipped)
   }
   BinaryCursor binary(bytes, pos, format == Format::BinaryBig, path);
 
