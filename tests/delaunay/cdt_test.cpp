@@ -333,6 +333,22 @@ TEST(Cdt, random_points_with_random_noncrossing_segments) {
   }
 }
 
+TEST(Cdt, long_segments_through_dense_cloud) {
+  Domain d = polygon(rect(0, 0, 1, 1), "dense cloud with long segments");
+  for (const auto& p : random_points(50000, 99)) d.points.push_back(p);
+  const int b = static_cast<int>(d.points.size());
+  d.points.emplace_back(0.3, 0.0);  // on the bottom side: splits it
+  d.points.emplace_back(1.0, 0.3);  // on the right side
+  d.points.emplace_back(0.0, 0.75);  // on the left side
+  d.points.emplace_back(0.6, 0.95);
+  d.segments.push_back({0, 2});          // the diagonal
+  d.segments.push_back({b, b + 1});      // below the diagonal
+  d.segments.push_back({b + 2, b + 3});  // above the diagonal
+  CdtStats st;
+  checked_cdt(d, {false, 1.0, true}, &st);
+  EXPECT_EQ(st.points_on_segments, 3u) << d.name;
+}
+
 // ---- every shared domain ---------------------------------------------------------------------
 
 namespace {

@@ -369,19 +369,26 @@ void Triangulation::emit(int p, int q, int c) {
   new_tris_.push_back(t);
 }
 
-void Triangulation::triangulate_chain(int p, int q, int lo, int hi) {
+void Triangulation::triangulate_chain(int p0, int q0, int lo0, int hi0) {
   // The chain_[lo..hi) lies left of p->q, ordered from p to q: pick the vertex whose circle
   // through p and q is empty of the others (circles through p, q are nested on that side).
-  if (lo >= hi) return;
-  int ci = lo;
-  for (int j = lo + 1; j < hi; ++j)
-    if (incircle(point(p), point(q), point(chain_[static_cast<std::size_t>(ci)]), point(chain_[static_cast<std::size_t>(j)])) ==
-        Sign::Positive)
-      ci = j;
-  const int c = chain_[static_cast<std::size_t>(ci)];
-  triangulate_chain(p, c, lo, ci);
-  triangulate_chain(c, q, ci + 1, hi);
-  emit(p, q, c);
+  // Explicit stack: long segments may cross very many triangles.
+  chain_stack_.clear();
+  chain_stack_.push_back({p0, q0, lo0, hi0});
+  while (!chain_stack_.empty()) {
+    const auto [p, q, lo, hi] = chain_stack_.back();
+    chain_stack_.pop_back();
+    if (lo >= hi) continue;
+    int ci = lo;
+    for (int j = lo + 1; j < hi; ++j)
+      if (incircle(point(p), point(q), point(chain_[static_cast<std::size_t>(ci)]), point(chain_[static_cast<std::size_t>(j)])) ==
+          Sign::Positive)
+        ci = j;
+    const int c = chain_[static_cast<std::size_t>(ci)];
+    emit(p, q, c);
+    chain_stack_.push_back({p, c, lo, ci});
+    chain_stack_.push_back({c, q, ci + 1, hi});
+  }
 }
 
 void Triangulation::retriangulate(int a, int end, int seg) {
@@ -483,22 +490,36 @@ std::uint64_t splitmix64(std::uint64_t& s) {
   return z ^ (z >> 31);
 }
 
-// Hilbert index of (x, y) in a 2^order grid.
-std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int order) {
-  std::uint64_t d = 0;
-  for (std::uint32_t s = 1u << (order - 1); s > 0; s >>= 1) {
-    const std::uint32_t rx = (x & s) ? 1u : 0u;
-    const std::uint32_t ry = (y & s) ? 1u : 0u;
-    d += static_cast<std::uint64_t>(s) * s * ((3u * rx) ^ ry);
-    if (ry == 0) {
-      if (rx == 1) {
-        x = s - 1 - (x & (s - 1));
-        y = s - 1 - (y & (s - 1));
+// Hilbert index of (x, y) in a 2^order grid, by a 4-state table (state = transposed?, flipped?;
+// both commute, so composing is xor): one lookup per level, no data-dependent branches.
+struct HilbertTable {
+  std::uint8_t entry[16];  // [state * 4 + (xbit << 1 | ybit)] = digit | next_state << 2
+  HilbertTable() {
+    for (int st = 0; st < 4; ++st)
+      for (int q = 0; q < 4; ++q) {
+        const int sw = st & 1, fl = st >> 1;
+        int tx = ((q >> 1) & 1) ^ fl, ty = (q & 1) ^ fl;
+        if (sw) std::swap(tx, ty);
+        const int digit = (3 * tx) ^ ty;
+        int nsw = sw, nfl = fl;
+        if (ty == 0) {
+          nsw ^= 1;
+          if (tx == 1) nfl ^= 1;
+        }
+        entry[st * 4 + q] = static_cast<std::uint8_t>(digit | ((nsw | (nfl << 1)) << 2));
       }
-      std::swap(x, y);
-    }
-    x &= s - 1;
-    y &= s - 1;
+  }
+};
+
+std::uint64_t hilbert_index(std::uint32_t x, std::uint32_t y, int order) {
+  static const HilbertTable table;
+  std::uint64_t d = 0;
+  unsigned st = 0;
+  for (int l = order - 1; l >= 0; --l) {
+    const unsigned q = (((x >> l) & 1u) << 1) | ((y >> l) & 1u);
+    const unsigned e = table.entry[st * 4 + q];
+    d = (d << 2) | (e & 3u);
+    st = e >> 2;
   }
   return d;
 }
@@ -510,7 +531,8 @@ std::vector<int> brio_hilbert_order(const std::vector<Point2>& points, std::uint
   std::vector<int> order(n);
   for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<int>(i);
   if (n < 2) return order;
-  for (std::size_t i = n - 1; i > 0; --i) std::swap(order[i], order[splitmix64(seed) % (i + 1)]);
+  for (std::size_t i = n - 1; i > 0; --i)
+    std::swap(order[i], order[static_cast<std::size_t>(((splitmix64(seed) >> 32) * (i + 1)) >> 32)]);
   double minx = points[0].x(), maxx = minx, miny = points[0].y(), maxy = miny;
   for (const auto& p : points) {
     minx = std::min(minx, p.x());
@@ -520,6 +542,13 @@ std::vector<int> brio_hilbert_order(const std::vector<Point2>& points, std::uint
   }
   constexpr int kOrder = 16;
   const double scale = static_cast<double>((1u << kOrder) - 1) / std::max({maxx - minx, maxy - miny, 1e-300});
+  // Keys computed once in input order (sequential reads of the points).
+  std::vector<std::uint32_t> key(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto qx = static_cast<std::uint32_t>((points[i].x() - minx) * scale);
+    const auto qy = static_cast<std::uint32_t>((points[i].y() - miny) * scale);
+    key[i] = static_cast<std::uint32_t>(hilbert_index(qx, qy, kOrder));
+  }
   // (32-bit Hilbert key << 32 | index), radix-sorted on the key bytes.
   std::vector<std::uint64_t> keyed, tmp;
   keyed.reserve(n);
@@ -537,12 +566,8 @@ std::vector<int> brio_hilbert_order(const std::vector<Point2>& points, std::uint
   for (std::size_t r = 0; r < bounds.size(); ++r) {
     const std::size_t end = bounds[r];
     keyed.clear();
-    for (std::size_t i = lo; i < end; ++i) {
-      const Point2& p = points[static_cast<std::size_t>(order[i])];
-      const auto qx = static_cast<std::uint32_t>((p.x() - minx) * scale);
-      const auto qy = static_cast<std::uint32_t>((p.y() - miny) * scale);
-      keyed.push_back((hilbert_index(qx, qy, kOrder) << 32) | static_cast<std::uint32_t>(order[i]));
-    }
+    for (std::size_t i = lo; i < end; ++i)
+      keyed.push_back((static_cast<std::uint64_t>(key[static_cast<std::size_t>(order[i])]) << 32) | static_cast<std::uint32_t>(order[i]));
     if (keyed.size() < 1024) {
       std::sort(keyed.begin(), keyed.end());
     } else {

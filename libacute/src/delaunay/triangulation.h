@@ -113,6 +113,7 @@ class Triangulation {
   std::vector<BoundaryEdge> boundary_;
   std::vector<EdgeRec> recs_;
   std::vector<std::array<int, 3>> split_edges_;
+  std::vector<std::array<int, 4>> chain_stack_;
   int depth_ = 0;
 };
 
