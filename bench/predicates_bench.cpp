@@ -84,6 +84,10 @@ void BM_incircle_naive(benchmark::State& s) { run4(s, random_points(), pr::detai
 void BM_incircle(benchmark::State& s) { run4(s, random_points(), pr::incircle); }
 void BM_orient2d_grid_degenerate(benchmark::State& s) { run3(s, grid_points(), pr::orient2d); }
 void BM_incircle_cocircular(benchmark::State& s) { run4(s, circle_points(), pr::incircle); }
+// The exact stages alone on random input: every difference inexact, full-length expansions (the
+// worst case the filter hands over, e.g. nearly cocircular points with non-representable spacing).
+void BM_orient2d_exact_stage(benchmark::State& s) { run3(s, random_points(), pr::detail::orient2d_exact); }
+void BM_incircle_exact_stage(benchmark::State& s) { run4(s, random_points(), pr::detail::incircle_exact); }
 void BM_angle_kind(benchmark::State& s) { run3(s, random_points(), pr::angle_kind); }
 void BM_intersect_segments(benchmark::State& s) { run4(s, random_points(), pr::intersect_segments); }
 
@@ -93,6 +97,8 @@ BENCHMARK(BM_incircle_naive);
 BENCHMARK(BM_incircle);
 BENCHMARK(BM_orient2d_grid_degenerate);
 BENCHMARK(BM_incircle_cocircular);
+BENCHMARK(BM_orient2d_exact_stage);
+BENCHMARK(BM_incircle_exact_stage);
 BENCHMARK(BM_angle_kind);
 BENCHMARK(BM_intersect_segments);
 

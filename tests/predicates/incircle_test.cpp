@@ -44,6 +44,14 @@ std::vector<Point2> lattice_circle(int r) {
   return pts;
 }
 
+TEST(Incircle, documented_sign_conventions) {
+  const Point2 a(1, 0), b(0, 1), c(-1, 0);  // counter-clockwise, unit circle
+  EXPECT_EQ(incircle(a, b, c, {0, 0}), Sign::Positive) << "center of a ccw triangle's circle";
+  EXPECT_EQ(incircle(a, b, c, {3, 3}), Sign::Negative) << "far outside";
+  EXPECT_EQ(incircle(a, b, c, {0, -1}), Sign::Zero) << "on the circle";
+  EXPECT_EQ(incircle(b, a, c, {0, 0}), Sign::Negative) << "clockwise triangle reverses the sign";
+}
+
 TEST(Incircle, random_points_match_exact_oracle) {
   Rng rng(11);
   for (int i = 0; i < 10000; ++i) {

@@ -32,6 +32,12 @@ void expect_permutation_rules(const Point2& a, const Point2& b, const Point2& c,
   EXPECT_EQ(orient2d(c, b, a), -s) << what << " cba: " << describe(a, b, c);
 }
 
+TEST(Orient2d, documented_sign_conventions) {
+  EXPECT_EQ(orient2d({0, 0}, {1, 0}, {0, 1}), Sign::Positive) << "counter-clockwise";
+  EXPECT_EQ(orient2d({0, 0}, {0, 1}, {1, 0}), Sign::Negative) << "clockwise";
+  EXPECT_EQ(orient2d({0, 0}, {1, 1}, {2, 2}), Sign::Zero) << "collinear";
+}
+
 TEST(Orient2d, random_points_match_exact_oracle) {
   Rng rng(1);
   for (int i = 0; i < 20000; ++i) {
