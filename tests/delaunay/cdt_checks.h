@@ -1,5 +1,5 @@
 // Test support for the delaunay layer: an independent verifier of constrained Delaunay
-// triangulations, small domain builders, and a fallback reader for .poly / CG:SHOP files.
+// triangulations and small domain builders.
 #pragma once
 
 #include <acute/core/domain.h>
@@ -168,19 +168,6 @@ inline std::string join(const std::vector<std::string>& v) {
   return s;
 }
 
-inline void write_off(const Mesh& mesh, const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "w");
-  if (!f) return;
-  std::fprintf(f, "OFF\n%zu %zu 0\n", mesh.n_vertices(), mesh.n_faces());
-  for (auto vh : mesh.vertices()) std::fprintf(f, "%.17g %.17g 0\n", mesh.point(vh)[0], mesh.point(vh)[1]);
-  for (auto fh : mesh.faces()) {
-    std::fprintf(f, "3");
-    for (auto v : mesh.fv_range(fh)) std::fprintf(f, " %d", v.idx());
-    std::fprintf(f, "\n");
-  }
-  std::fclose(f);
-}
-
 // Builders.
 inline Domain polygon(const std::vector<Point2>& pts, const std::string& name) {
   Domain d;
@@ -197,99 +184,6 @@ inline void add_loop(Domain& d, const std::vector<Point2>& pts) {
 }
 inline std::vector<Point2> rect(double x0, double y0, double x1, double y1) {
   return {Point2(x0, y0), Point2(x1, y0), Point2(x1, y1), Point2(x0, y1)};
-}
-
-// Fallback readers (until acute::io lands): Triangle .poly (no regions/attributes used).
-inline bool read_poly_simple(const std::string& path, Domain& d) {
-  std::ifstream in(path);
-  if (!in) return false;
-  std::vector<std::string> lines;
-  std::string line;
-  while (std::getline(in, line)) {
-    const auto hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    lines.push_back(line);
-  }
-  std::size_t li = 0;
-  auto next = [&]() -> std::istringstream { return std::istringstream(li < lines.size() ? lines[li++] : std::string()); };
-  int nv = 0, dim = 0, nattr = 0, nmark = 0;
-  next() >> nv >> dim >> nattr >> nmark;
-  std::vector<long> ids;
-  for (int i = 0; i < nv; ++i) {
-    auto s = next();
-    long id;
-    double x, y;
-    s >> id >> x >> y;
-    for (int a = 0; a < nattr; ++a) {
-      double t;
-      s >> t;
-    }
-    int m = 0;
-    if (nmark) s >> m;
-    ids.push_back(id);
-    d.points.emplace_back(x, y);
-    d.point_markers.push_back(m);
-  }
-  const long base = ids.empty() ? 0 : *std::min_element(ids.begin(), ids.end());
-  int ns = 0, smark = 0;
-  next() >> ns >> smark;
-  for (int i = 0; i < ns; ++i) {
-    auto s = next();
-    long id, a, b;
-    int m = 0;
-    s >> id >> a >> b;
-    if (smark) s >> m;
-    d.segments.push_back({static_cast<int>(a - base), static_cast<int>(b - base)});
-    d.segment_markers.push_back(m);
-  }
-  int nh = 0;
-  next() >> nh;
-  for (int i = 0; i < nh; ++i) {
-    auto s = next();
-    long id;
-    double x, y;
-    s >> id >> x >> y;
-    d.holes.emplace_back(x, y);
-  }
-  return nv > 0;
-}
-
-// Minimal CG:SHOP 2025 instance reader (integer coordinates, flat arrays).
-inline std::vector<double> json_numbers(const std::string& text, const std::string& key) {
-  std::vector<double> out;
-  auto k = text.find("\"" + key + "\"");
-  if (k == std::string::npos) return out;
-  auto open = text.find('[', k);
-  int depth = 0;
-  std::string num;
-  for (std::size_t i = open; i < text.size(); ++i) {
-    const char c = text[i];
-    if (c == '[') {
-      ++depth;
-    } else if (c == ']' || c == ',') {
-      if (!num.empty()) out.push_back(std::stod(num));
-      num.clear();
-      if (c == ']' && --depth == 0) break;
-    } else if ((c >= '0' && c <= '9') || c == '-' || c == '.' || c == 'e' || c == 'E' || c == '+') {
-      num += c;
-    }
-  }
-  return out;
-}
-inline bool read_cgshop_simple(const std::string& path, Domain& d) {
-  std::ifstream in(path);
-  if (!in) return false;
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string t = ss.str();
-  const auto xs = json_numbers(t, "points_x"), ys = json_numbers(t, "points_y");
-  const auto region = json_numbers(t, "region_boundary"), cons = json_numbers(t, "additional_constraints");
-  for (std::size_t i = 0; i < xs.size(); ++i) d.points.emplace_back(xs[i], ys[i]);
-  for (std::size_t i = 0; i < region.size(); ++i)
-    d.segments.push_back({static_cast<int>(region[i]), static_cast<int>(region[(i + 1) % region.size()])});
-  for (std::size_t i = 0; i + 1 < cons.size(); i += 2) d.segments.push_back({static_cast<int>(cons[i]), static_cast<int>(cons[i + 1])});
-  return !xs.empty();
 }
 
 inline double polygon_area(const Domain& d, const std::vector<int>& loop) {

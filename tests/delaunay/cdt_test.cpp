@@ -3,6 +3,7 @@
 
 #include <acute/core/errors.h>
 #include <acute/delaunay/cdt.h>
+#include <acute/io/io.h>
 
 #include <gtest/gtest.h>
 
@@ -366,27 +367,45 @@ std::vector<fs::path> files_in(const fs::path& dir, const std::string& suffix) {
 
 }  // namespace
 
-TEST(Cdt, classic_domains_are_valid_cdts) {
-  auto files = files_in(fs::path(ACUTE_SHARED_DIR) / "domains" / "classic", ".poly");
-  if (files.empty()) GTEST_SKIP() << "no shared classic domains";
-  const std::string out = out_dir("classic");
+// Every .poly of a folder: build_cdt (box.poly with Triangle -c), verify, write OUT/<name>.off.
+void check_poly_folder(const fs::path& dir, const std::string& sub) {
+  const auto files = files_in(dir, ".poly");
+  const std::string out = out_dir(sub);
   for (const auto& f : files) {
+    const std::string name = f.stem().string();
     Domain d;
-    ASSERT_TRUE(read_poly_simple(f.string(), d)) << f;
-    d.name = f.stem().string();
-    d.convex_hull = d.name == "box";
+    try {
+      d = acute::io::read_domain(f.string());
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << name << ": " << e.what();
+      continue;
+    }
+    d.name = name;
+    d.convex_hull = name == "box";
     CdtStats st;
     Mesh m;
     try {
       m = build_cdt(d, {}, &st);
     } catch (const std::exception& e) {
-      ADD_FAILURE() << d.name << ": " << e.what();
+      ADD_FAILURE() << name << ": " << e.what();
       continue;
     }
     const auto bad = verify_cdt(m, d, {m.n_vertices() < 1500, -1, false});
-    EXPECT_TRUE(bad.empty()) << d.name << ":\n" << join(bad);
-    write_off(m, out + "/" + d.name + ".off");
+    EXPECT_TRUE(bad.empty()) << name << ":\n" << join(bad);
+    acute::io::write_mesh(m, out + "/" + name + ".off");
   }
+}
+
+TEST(Cdt, classic_domains_are_valid_cdts) {
+  const fs::path dir = fs::path(ACUTE_SHARED_DIR) / "domains" / "classic";
+  if (files_in(dir, ".poly").empty()) GTEST_SKIP() << "no shared classic domains";
+  check_poly_folder(dir, "classic");
+}
+
+TEST(Cdt, bundled_meshes_dir_domains_are_valid_cdts) {
+  const fs::path dir = fs::path(ACUTE_MESHES_DIR);
+  if (files_in(dir, ".poly").empty()) GTEST_SKIP() << "no .poly in " << dir;
+  check_poly_folder(dir, "meshes");
 }
 
 TEST(Cdt, cgshop_instances_are_valid_cdts) {
@@ -395,10 +414,15 @@ TEST(Cdt, cgshop_instances_are_valid_cdts) {
   EXPECT_EQ(files.size(), 150u);
   const std::string out = out_dir("cgshop");
   for (const auto& f : files) {
-    Domain d;
-    ASSERT_TRUE(read_cgshop_simple(f.string(), d)) << f;
     std::string name = f.filename().string();
     name = name.substr(0, name.size() - std::string(".instance.json").size());
+    Domain d;
+    try {
+      d = acute::io::read_domain(f.string());
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << name << ": " << e.what();
+      continue;
+    }
     d.name = name;
     // The region boundary is the first loop of segments.
     std::vector<int> loop;
@@ -412,12 +436,12 @@ TEST(Cdt, cgshop_instances_are_valid_cdts) {
     try {
       m = build_cdt(d, {}, &st);
     } catch (const std::exception& e) {
-      ADD_FAILURE() << d.name << ": " << e.what();
+      ADD_FAILURE() << name << ": " << e.what();
       continue;
     }
-    EXPECT_EQ(st.dropped_points, 0u) << d.name;
+    EXPECT_EQ(st.dropped_points, 0u) << name;
     const auto bad = verify_cdt(m, d, {true, area, true});
-    EXPECT_TRUE(bad.empty()) << d.name << ":\n" << join(bad);
-    write_off(m, out + "/" + d.name + ".off");
+    EXPECT_TRUE(bad.empty()) << name << ":\n" << join(bad);
+    acute::io::write_mesh(m, out + "/" + name + ".off");
   }
 }

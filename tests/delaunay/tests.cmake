@@ -1,4 +1,4 @@
 acute_add_test(delaunay_tests
   SOURCES
     delaunay/cdt_test.cpp
-  LIBS acute_delaunay)
+  LIBS acute_delaunay acute_io)
