@@ -14,10 +14,15 @@ namespace acute::io {
 /// Callback for non-fatal remarks (e.g. "regional attributes ignored"). May be empty.
 using WarningSink = std::function<void(const std::string&)>;
 
-/// Reads a Triangle .poly file (0- or 1-based; a vertex count of 0 reads the sibling .node).
+/// Reads a Triangle .poly file (0- or 1-based, from the first vertex index; a vertex count of 0
+/// reads the sibling .node). Regional attributes, a missing hole section and repeated segments
+/// are reported through `warn` (repeats dropped). Ends with validate_domain; messages are
+/// "path:line: ..." in the file's numbering. Indices in the Domain are 0-based.
 Domain read_poly(const std::string& path, const WarningSink& warn = {});
 
 /// Reads a CG:SHOP 2025 instance JSON (points, region_boundary, additional_constraints).
+/// Coordinates may be numbers or strings "p/q" (rounded to the nearest double). Boundary segments
+/// get marker 1, constraints 0. Ends with validate_domain.
 Domain read_cgshop(const std::string& path, const WarningSink& warn = {});
 
 /// Reads a domain by extension: .poly, .json, or a mesh (.off .obj .ply .node/.ele) whose
@@ -48,8 +53,10 @@ std::vector<PointOnSegment> find_points_on_segments(const Domain& domain);
 /// mesh gets a seed point strictly inside it. Deleted elements are ignored.
 Domain domain_of_mesh(const Mesh& mesh);
 
-/// Reads a triangle mesh (.off .obj .ply, Triangle .node/.ele). Throws on non-triangle faces,
-/// NaN/inf, out-of-range indices, non-manifold input.
+/// Reads a triangle mesh (.off .obj .ply (ascii/binary), Triangle .node/.ele (markers kept)).
+/// Throws on non-triangle faces, NaN/inf, out-of-range indices, repeated vertices in a face,
+/// non-manifold edges or vertices, and mixed orientation (folds), naming the first bad element.
+/// An all-clockwise mesh is reversed and nonzero z dropped, with a warning. Vertices are Free.
 Mesh read_mesh(const std::string& path, const WarningSink& warn = {});
 
 struct WriteOptions {
