@@ -209,6 +209,27 @@ TEST(Cdt, duplicate_points_merged) {
   EXPECT_EQ(m.n_vertices(), 5u) << d.name;
 }
 
+TEST(Cdt, overlapping_and_repeated_segments_merged) {
+  Domain d = polygon(rect(0, 0, 4, 4), "overlaps");
+  const int b = static_cast<int>(d.points.size());
+  d.points.emplace_back(1, 2);
+  d.points.emplace_back(3, 2);
+  d.points.emplace_back(2, 2);
+  d.points.emplace_back(3.5, 2);
+  d.segments.push_back({b, b + 1});      // (1,2)-(3,2)
+  d.segments.push_back({b + 2, b + 3});  // (2,2)-(3.5,2) overlaps it
+  d.segments.push_back({b + 1, b});      // repeated, reversed
+  d.segments.push_back({0, 1});          // repeated boundary side
+  CdtStats st;
+  const Mesh m = checked_cdt(d, {true, 16.0, true}, &st);
+  int on_line = 0;
+  for (auto eh : m.edges()) {
+    const auto h = m.halfedge_handle(eh, 0);
+    on_line += (acute::is_constrained(m, eh) && m.point(m.from_vertex_handle(h))[1] == 2 && m.point(m.to_vertex_handle(h))[1] == 2) ? 1 : 0;
+  }
+  EXPECT_EQ(on_line, 3) << d.name << ": (1,2)-(2,2)-(3,2)-(3.5,2)";
+}
+
 TEST(Cdt, crossing_segments_error_names_both) {
   Domain d = polygon(rect(0, 0, 4, 4), "cross");
   d.points.emplace_back(1, 1);
