@@ -1,0 +1,89 @@
+// Layer: cvt. Centroidal Voronoi tessellation meshing: size field, sampling, CDT, then Lloyd and
+// L-BFGS (LBFGS++ two-loop recursion) on the CVT energy with the constrained Delaunay property
+// restored after every step.
+#pragma once
+
+#include <acute/core/domain.h>
+#include <acute/cvt/sampling.h>
+#include <acute/cvt/size_field.h>
+#include <acute/cvt/voronoi.h>
+#include <acute/mesh/mesh.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace acute {
+
+/// One iteration, reported to CvtParams::observer / CvtOptimizeParams::observer.
+struct CvtProgress {
+  const char* phase = "";        ///< "lloyd" or "lbfgs"
+  int iteration = 0;             ///< counted over both phases, starting at 1
+  double energy = 0;             ///< F after the iteration
+  double gradient_norm = 0;      ///< |dF/dX| over the moving coordinates (Euclidean)
+  double max_move = 0;           ///< max over moving vertices of |v - c_v| / h(v) (projected on segments)
+  std::size_t flips = 0;         ///< Delaunay flips done after the step
+  std::size_t blocked = 0;       ///< vertices whose move had to be shortened or dropped
+  bool fallback = false;         ///< lbfgs: the line search failed, a Lloyd step was taken
+};
+
+struct CvtOptimizeParams {
+  int lloyd_iterations = 10;     ///< Lloyd steps first (robust start from random samples)
+  int lbfgs_iterations = 200;    ///< then at most this many L-BFGS iterations
+  int lbfgs_memory = 7;          ///< stored correction pairs (geogram's default)
+  double move_tolerance = 1e-4;  ///< stop when max |v - c_v| / h(v) < this
+  double energy_tolerance = 1e-12;  ///< stop when |dF| <= this * F over an iteration
+  /// Vertices allowed to move (Input vertices are ignored); empty: every non-input vertex. With a
+  /// subset, the energy is taken over the faces around it only (local smoothing).
+  std::vector<VertexHandle> subset;
+  std::function<void(const CvtProgress&)> observer;
+};
+
+struct CvtOptimizeResult {
+  int lloyd_iterations = 0;
+  int lbfgs_iterations = 0;
+  int fallbacks = 0;              ///< L-BFGS iterations replaced by a Lloyd step
+  double initial_energy = 0;
+  double energy = 0;
+  double gradient_norm = 0;
+  double max_move = 0;
+  bool converged = false;         ///< a tolerance was met (not the iteration cap)
+};
+
+/// Optimises the vertex positions of a constrained Delaunay mesh (segment table set when it has
+/// OnSegment vertices) for the CVT energy: Free vertices in 2D, OnSegment vertices along their
+/// segment, Input vertices fixed. After every step the moves are applied with can_relocate/relocate
+/// (a move that would invert a triangle is halved up to 8 times, then dropped) and the constrained
+/// Delaunay property restored by flips. Deterministic. The mesh keeps its vertex set; faces and
+/// edges may be flipped (no garbage collection).
+CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOptimizeParams& params = {});
+
+struct CvtParams {
+  double size = 0;                 ///< --size H (uniform)
+  std::size_t target_vertices = 0; ///< --vertices N (uniform, calibrated)
+  double gradation = 1.3;          ///< graded default field
+  double lfs_factor = 1.0;
+  double hmax = 0;                 ///< 0: diameter / 25
+  int lloyd_iterations = 10;
+  int lbfgs_iterations = 200;
+  double move_tolerance = 1e-4;
+  unsigned seed = 1;
+  std::function<void(const CvtProgress&)> observer;
+};
+
+struct CvtResult {
+  Mesh mesh;                  ///< the optimised constrained Delaunay mesh (compacted), segment table set
+  SizeField size_field;       ///< the field used (for later local smoothing)
+  SamplingStats sampling;
+  CvtOptimizeResult optimization;
+  int iterations = 0;         ///< lloyd + lbfgs
+  double energy = 0;
+  double gradient_norm = 0;
+};
+
+/// build_cdt(domain) -> size field -> sample_domain -> cvt_optimize.
+/// \throws InvalidInput as build_cdt does, or for a non-positive size.
+CvtResult cvt_mesh(const Domain& domain, const CvtParams& params = {});
+
+}  // namespace acute

@@ -1,0 +1,93 @@
+// Layer: cvt. The target edge length h(x): uniform, or piecewise linear on a background
+// triangulation (graded from the local feature size of the input).
+#pragma once
+
+#include <acute/core/domain.h>
+#include <acute/core/types.h>
+#include <acute/mesh/mesh.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace acute {
+
+/// A positive size field h(x). Copyable and immutable once built; evaluation is thread-safe
+/// (walk hints are owned by the caller).
+class SizeField {
+ public:
+  /// Uniform h = 1.
+  SizeField() = default;
+  static SizeField uniform(double h);
+  /// Piecewise linear on a triangulation of (part of) the plane: `values[i]` at `points[i]`,
+  /// triangles counter-clockwise. Points outside it get the value of the nearest triangle reached
+  /// by the walk (barycentric coordinates clamped). Visibility walks terminate on Delaunay
+  /// triangulations (what from_local_feature_size builds).
+  static SizeField piecewise_linear(std::vector<Point2> points, std::vector<std::array<int, 3>> triangles, std::vector<double> values);
+
+  bool is_uniform() const { return triangles_.empty(); }
+  /// h(p). `hint`: a background triangle to start the walk from (any value is accepted; updated to
+  /// the triangle holding p). Ignored for a uniform field.
+  double eval(const Point2& p, int& hint) const;
+  double operator()(const Point2& p) const {
+    int hint = -1;
+    return eval(p, hint);
+  }
+  /// Multiplies every value by factor (> 0).
+  void scale(double factor);
+  double min_value() const { return min_; }
+  double max_value() const { return max_; }
+
+  /// The background triangulation (empty for a uniform field).
+  const std::vector<Point2>& background_points() const { return points_; }
+  const std::vector<std::array<int, 3>>& background_triangles() const { return triangles_; }
+  const std::vector<double>& background_values() const { return values_; }
+
+ private:
+  int walk(const Point2& p, int start) const;
+  void update_range();
+
+  double uniform_ = 1.0;
+  double min_ = 1.0, max_ = 1.0;
+  std::vector<Point2> points_;
+  std::vector<std::array<int, 3>> triangles_;
+  std::vector<std::array<int, 3>> neighbours_;  ///< across the edge opposite corner i; -1 on the hull
+  std::vector<double> values_;
+};
+
+struct SizeFieldParams {
+  double size = 0;                ///< > 0: uniform field of this edge length
+  std::size_t target_vertices = 0;  ///< > 0 (and size == 0): uniform field giving about this many vertices
+  double gradation = 1.3;         ///< graded field: |grad h| <= gradation - 1
+  double lfs_factor = 1.0;        ///< graded field: h = lfs_factor * local feature size at input points
+  double hmin = 0;                ///< graded field clamp; 0: 1e-6 * diameter
+  double hmax = 0;                ///< graded field clamp; 0: diameter / 25
+};
+
+/// Area, boundary length and diameter (bounding-box diagonal) of a meshed domain.
+struct DomainMeasures {
+  double area = 0;
+  double boundary_length = 0;
+  double diameter = 0;
+};
+DomainMeasures measure_domain(const Mesh& mesh);
+
+/// The uniform h for which a CVT of the domain has about n vertices: solves
+/// n = 2A/(sqrt(3) h^2) + P/(2h) + 1 (equilateral triangles; V = T/2 + B/2 + 1).
+double size_for_vertex_count(const DomainMeasures& measures, std::size_t n);
+
+/// Predicted vertex count of a CVT with field h: integral of 2/(sqrt(3) h^2) over the mesh
+/// (centroid rule per face) + boundary length / (2 h) along mesh boundary edges + 1.
+double predicted_vertex_count(const Mesh& mesh, const SizeField& field);
+
+/// The graded field of the input: h = lfs_factor * lfs at every input point (distance to the
+/// nearest input point or segment not incident to it, taken from the input CDT: neighbours and the
+/// constrained edges opposite it in its star; the feet on those segments are added as background
+/// points), plus a coarse grid at hmax; clamped to [hmin, hmax] and gradation-limited along the
+/// edges of the Delaunay triangulation of those points (Dijkstra), which is the background mesh.
+SizeField local_feature_size_field(const Mesh& input_cdt, const SizeFieldParams& params);
+
+/// Chooses the field from params: uniform(size), uniform for target_vertices, else graded.
+SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params);
+
+}  // namespace acute

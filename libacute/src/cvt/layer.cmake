@@ -1,0 +1,7 @@
+acute_add_layer(cvt
+  SOURCES
+    src/cvt/size_field.cpp
+    src/cvt/sampling.cpp
+    src/cvt/voronoi.cpp
+    src/cvt/optimize.cpp
+  DEPENDS acute_delaunay acute_ops)

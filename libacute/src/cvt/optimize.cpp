@@ -1,0 +1,321 @@
+#include <acute/cvt/cvt.h>
+
+#include <acute/core/errors.h>
+#include <acute/delaunay/cdt.h>
+#include <acute/mesh/segments.h>
+#include <acute/ops/delaunay_flips.h>
+#include <acute/ops/relocate.h>
+
+#include <LBFGSpp/BFGSMat.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace acute {
+namespace {
+
+/// The moving vertices, their coordinates (2 per free vertex, the arc length along the segment
+/// for a vertex on a segment), the cells, and the move/flip machinery.
+class Optimizer {
+ public:
+  Optimizer(Mesh& mesh, const SizeField& field, const CvtOptimizeParams& params) : mesh_(mesh), field_(field) {
+    std::vector<char> taken(mesh.n_vertices(), 0);
+    auto add = [&](VertexHandle vh) {
+      if (!vh.is_valid() || mesh.status(vh).deleted() || taken[static_cast<std::size_t>(vh.idx())]) return;
+      const auto& d = mesh.data(vh);
+      if (d.kind == VertexKind::Input || mesh.is_isolated(vh)) return;
+      taken[static_cast<std::size_t>(vh.idx())] = 1;
+      Mover m;
+      m.vh = vh;
+      m.offset = num_vars_;
+      if (d.kind == VertexKind::OnSegment) {
+        if (d.segment < 0 || static_cast<std::size_t>(d.segment) >= segment_table(mesh).size())
+          throw InvalidInput("cvt: vertex " + std::to_string(vh.idx()) + " is on a segment missing from the segment table");
+        const auto& [a, b] = segment_endpoints(mesh, d.segment);
+        m.segment = d.segment;
+        m.origin = a;
+        m.dir = (b - a).normalized();
+        num_vars_ += 1;
+      } else {
+        num_vars_ += 2;
+      }
+      movers_.push_back(m);
+    };
+    local_ = !params.subset.empty();
+    if (local_) {
+      for (VertexHandle vh : params.subset) add(vh);
+      std::sort(movers_.begin(), movers_.end(), [](const Mover& a, const Mover& b) { return a.vh.idx() < b.vh.idx(); });
+      int off = 0;
+      for (auto& m : movers_) m.offset = off, off += m.segment >= 0 ? 1 : 2;
+    } else {
+      for (auto vh : mesh.vertices()) add(vh);
+    }
+    face_stamp_.assign(mesh.n_faces(), 0);
+  }
+
+  int num_vars() const { return num_vars_; }
+  std::size_t num_movers() const { return movers_.size(); }
+
+  /// Cells at the current positions: energy, gradient, max |v - c| / h.
+  void evaluate() {
+    if (local_) {
+      faces_.clear();
+      ++stamp_;
+      for (const auto& m : movers_)
+        for (auto fh : mesh_.vf_range(m.vh))
+          if (face_stamp_[static_cast<std::size_t>(fh.idx())] != stamp_) {
+            face_stamp_[static_cast<std::size_t>(fh.idx())] = stamp_;
+            faces_.push_back(fh);
+          }
+      std::sort(faces_.begin(), faces_.end());
+    }
+    compute_cells(mesh_, field_, cells_, ws_, local_ ? &faces_ : nullptr);
+    energy_ = cells_.energy;
+    grad_.resize(num_vars_);
+    max_move_ = 0;
+    for (const auto& m : movers_) {
+      const auto i = static_cast<std::size_t>(m.vh.idx());
+      const Point2 v = point2(mesh_, m.vh);
+      const double mass = cells_.mass[i];
+      const Point2 g = 2.0 * (mass * v - cells_.moment[i]);  // 2 m (v - c)
+      const double h = std::pow(ws_.vertex_rho[i], -0.25);
+      if (m.segment >= 0) {
+        grad_[m.offset] = g.dot(m.dir);
+        max_move_ = std::max(max_move_, std::abs(grad_[m.offset]) / (2.0 * mass * h));
+      } else {
+        grad_[m.offset] = g.x();
+        grad_[m.offset + 1] = g.y();
+        max_move_ = std::max(max_move_, g.norm() / (2.0 * mass * h));
+      }
+    }
+  }
+
+  void get_x(Eigen::VectorXd& x) const {
+    x.resize(num_vars_);
+    for (const auto& m : movers_) {
+      const Point2 v = point2(mesh_, m.vh);
+      if (m.segment >= 0) {
+        x[m.offset] = (v - m.origin).dot(m.dir);
+      } else {
+        x[m.offset] = v.x();
+        x[m.offset + 1] = v.y();
+      }
+    }
+  }
+
+  /// Lloyd targets: the centroids (projected on the segment line for vertices on segments).
+  void lloyd_targets(Eigen::VectorXd& x) const {
+    x.resize(num_vars_);
+    for (const auto& m : movers_) {
+      const Point2 c = cells_.centroid(m.vh.idx());
+      if (m.segment >= 0) {
+        x[m.offset] = (c - m.origin).dot(m.dir);
+      } else {
+        x[m.offset] = c.x();
+        x[m.offset + 1] = c.y();
+      }
+    }
+  }
+
+  /// Diagonal scaling 1/sqrt(2 m) per coordinate (a unit step along -scaled gradient is Lloyd's).
+  void scaling(Eigen::VectorXd& s) const {
+    s.resize(num_vars_);
+    for (const auto& m : movers_) {
+      const double mass = cells_.mass[static_cast<std::size_t>(m.vh.idx())];
+      const double si = mass > 0 ? 1.0 / std::sqrt(2.0 * mass) : 0.0;
+      s[m.offset] = si;
+      if (m.segment < 0) s[m.offset + 1] = si;
+    }
+  }
+
+  /// Moves every vertex towards its target (halving a move that would invert a triangle or leave
+  /// the segment interval, up to 8 times), then restores the constrained Delaunay property.
+  void apply(const Eigen::VectorXd& x) {
+    queue_.clear();
+    blocked_ = 0;
+    for (const auto& m : movers_) {
+      const Point2 v = point2(mesh_, m.vh);
+      Point2 target = m.segment >= 0 ? Point2(m.origin + x[m.offset] * m.dir) : Point2(x[m.offset], x[m.offset + 1]);
+      if (m.segment >= 0) target = project_on_segment(mesh_, m.segment, target);
+      if (target == v) continue;
+      bool moved = false;
+      for (int k = 0; k <= 8; ++k) {
+        if (can_relocate(mesh_, m.vh, target) == OpVerdict::Ok) {
+          relocate(mesh_, m.vh, target);
+          moved = true;
+          if (k > 0) ++blocked_;
+          break;
+        }
+        target = 0.5 * (v + target);
+        if (m.segment >= 0) target = project_on_segment(mesh_, m.segment, target);
+      }
+      if (!moved) ++blocked_;
+      if (moved) push_star_edges(mesh_, m.vh, queue_);
+    }
+    flips_ = restore_delaunay(mesh_, queue_);
+  }
+
+  double energy() const { return energy_; }
+  const Eigen::VectorXd& gradient() const { return grad_; }
+  double max_move() const { return max_move_; }
+  std::size_t flips() const { return flips_; }
+  std::size_t blocked() const { return blocked_; }
+
+ private:
+  struct Mover {
+    VertexHandle vh;
+    int offset = 0;
+    int segment = -1;
+    Point2 origin{0, 0}, dir{0, 0};
+  };
+  Mesh& mesh_;
+  const SizeField& field_;
+  bool local_ = false;
+  std::vector<Mover> movers_;
+  int num_vars_ = 0;
+  CellIntegrals cells_;
+  CellWorkspace ws_;
+  std::vector<FaceHandle> faces_;
+  std::vector<unsigned> face_stamp_;
+  unsigned stamp_ = 0;
+  std::vector<EdgeHandle> queue_;
+  Eigen::VectorXd grad_;
+  double energy_ = 0, max_move_ = 0;
+  std::size_t flips_ = 0, blocked_ = 0;
+};
+
+}  // namespace
+
+CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOptimizeParams& params) {
+  CvtOptimizeResult res;
+  Optimizer opt(mesh, field, params);
+  opt.evaluate();
+  res.initial_energy = res.energy = opt.energy();
+  res.gradient_norm = opt.gradient().norm();
+  res.max_move = opt.max_move();
+  if (opt.num_vars() == 0) {
+    res.converged = true;
+    return res;
+  }
+  int iteration = 0;
+  auto report = [&](const char* phase, bool fallback) {
+    res.energy = opt.energy();
+    res.gradient_norm = opt.gradient().norm();
+    res.max_move = opt.max_move();
+    if (params.observer) {
+      CvtProgress p;
+      p.phase = phase;
+      p.iteration = iteration;
+      p.energy = res.energy;
+      p.gradient_norm = res.gradient_norm;
+      p.max_move = res.max_move;
+      p.flips = opt.flips();
+      p.blocked = opt.blocked();
+      p.fallback = fallback;
+      params.observer(p);
+    }
+  };
+  auto done = [&](double previous_energy) {
+    if (opt.max_move() < params.move_tolerance) return true;
+    return std::abs(previous_energy - opt.energy()) <= params.energy_tolerance * std::abs(opt.energy());
+  };
+
+  Eigen::VectorXd x, target;
+  auto lloyd_step = [&]() {
+    opt.lloyd_targets(target);
+    opt.apply(target);
+    opt.evaluate();
+  };
+  for (int k = 0; k < params.lloyd_iterations; ++k) {
+    const double before = opt.energy();
+    lloyd_step();
+    ++iteration;
+    ++res.lloyd_iterations;
+    report("lloyd", false);
+    if (done(before)) {
+      res.converged = true;
+      return res;
+    }
+  }
+
+  // L-BFGS in the scaled coordinates z = x / s (s = 1/sqrt(2 m) at the start of the phase).
+  const int n = opt.num_vars();
+  LBFGSpp::BFGSMat<double> bfgs;
+  bfgs.reset(n, std::max(1, params.lbfgs_memory));
+  Eigen::VectorXd s, gz, dz(n), x0, g0, zstep, y;
+  opt.scaling(s);
+  for (int k = 0; k < params.lbfgs_iterations; ++k) {
+    opt.get_x(x0);
+    g0 = opt.gradient();
+    const double f0 = opt.energy();
+    gz = s.cwiseProduct(g0);
+    if (bfgs.num_corrections() > 0) {
+      bfgs.apply_Hv(gz, -1.0, dz);
+    } else {
+      dz = -gz;
+    }
+    if (!(gz.dot(dz) < 0)) {
+      bfgs.reset(n, std::max(1, params.lbfgs_memory));
+      dz = -gz;
+    }
+    bool accepted = false;
+    double step = 1.0;
+    for (int ls = 0; ls < 10; ++ls, step *= 0.5) {
+      target = x0 + step * s.cwiseProduct(dz);
+      opt.apply(target);
+      opt.evaluate();
+      opt.get_x(x);
+      zstep = (x - x0).cwiseQuotient(s.cwiseMax(std::numeric_limits<double>::min()));
+      const double slope = std::min(0.0, gz.dot(zstep));
+      if (opt.energy() <= f0 + 1e-4 * slope && opt.energy() < f0) {
+        accepted = true;
+        break;
+      }
+    }
+    ++iteration;
+    ++res.lbfgs_iterations;
+    if (accepted) {
+      y = s.cwiseProduct(opt.gradient() - g0);
+      const double sy = zstep.dot(y);
+      if (sy > 1e-10 * zstep.norm() * y.norm()) bfgs.add_correction(zstep, y);
+    } else {
+      bfgs.reset(n, std::max(1, params.lbfgs_memory));
+      lloyd_step();
+      ++res.fallbacks;
+    }
+    report("lbfgs", !accepted);
+    if (done(f0)) {
+      res.converged = true;
+      return res;
+    }
+  }
+  return res;
+}
+
+CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
+  CvtResult out;
+  const Mesh cdt = build_cdt(domain);
+  SizeFieldParams sp;
+  sp.size = params.size;
+  sp.target_vertices = params.target_vertices;
+  sp.gradation = params.gradation;
+  sp.lfs_factor = params.lfs_factor;
+  sp.hmax = params.hmax;
+  out.size_field = make_size_field(cdt, sp);
+  SamplingParams samp;
+  samp.seed = params.seed;
+  out.mesh = sample_domain(domain, cdt, out.size_field, samp, &out.sampling);
+  CvtOptimizeParams op;
+  op.lloyd_iterations = params.lloyd_iterations;
+  op.lbfgs_iterations = params.lbfgs_iterations;
+  op.move_tolerance = params.move_tolerance;
+  op.observer = params.observer;
+  out.optimization = cvt_optimize(out.mesh, out.size_field, op);
+  out.iterations = out.optimization.lloyd_iterations + out.optimization.lbfgs_iterations;
+  out.energy = out.optimization.energy;
+  out.gradient_norm = out.optimization.gradient_norm;
+  return out;
+}
+
+}  // namespace acute

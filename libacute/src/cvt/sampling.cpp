@@ -1,0 +1,260 @@
+#include <acute/cvt/sampling.h>
+
+#include <acute/core/errors.h>
+#include <acute/delaunay/cdt.h>
+#include <acute/mesh/geometry.h>
+#include <acute/predicates/predicates.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace acute {
+
+SegmentTable domain_segment_table(const Domain& domain) {
+  SegmentTable table;
+  table.reserve(domain.segments.size());
+  for (const auto& s : domain.segments)
+    table.push_back({domain.points.at(static_cast<std::size_t>(s[0])), domain.points.at(static_cast<std::size_t>(s[1]))});
+  return table;
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Uniform double in (0, 1) from 32 random bits (portable, unlike the std distributions).
+inline double unit(std::mt19937& rng) { return (static_cast<double>(rng()) + 0.5) * (1.0 / 4294967296.0); }
+
+double segment_distance(const Point2& p, const Point2& a, const Point2& b) {
+  const Point2 d = b - a;
+  const double l2 = d.squaredNorm();
+  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * d)).norm();
+}
+
+/// Positions along [0, L] of the interior division points of a piece [s0, s1] of segment a + s u,
+/// n = max(1, round(integral of 1/h)) pieces of equal integral.
+void divide(const SizeField& field, const Point2& a, const Point2& u, double s0, double s1, int& hint, std::vector<double>& out) {
+  const double len = s1 - s0;
+  if (!(len > 0)) return;
+  auto inv_h = [&](double s) { return 1.0 / field.eval(a + s * u, hint); };
+  auto integrate = [&](int k, std::vector<double>& cum) {
+    cum.assign(static_cast<std::size_t>(k) + 1, 0.0);
+    double prev = inv_h(s0);
+    for (int i = 1; i <= k; ++i) {
+      const double cur = inv_h(s0 + len * i / k);
+      cum[static_cast<std::size_t>(i)] = cum[static_cast<std::size_t>(i) - 1] + 0.5 * (prev + cur) * len / k;
+      prev = cur;
+    }
+  };
+  std::vector<double> cum;
+  int k = field.is_uniform() ? 1 : 16;
+  integrate(k, cum);
+  if (!field.is_uniform()) {
+    const int k2 = static_cast<int>(std::min(200000.0, 16.0 + 4.0 * cum.back()));
+    if (k2 > k) integrate(k = k2, cum);
+  }
+  const double total = cum.back();
+  const int n = std::max(1, static_cast<int>(std::lround(total)));
+  std::size_t i = 0;
+  for (int j = 1; j < n; ++j) {
+    const double target = total * j / n;
+    while (i + 1 < cum.size() && cum[i + 1] < target) ++i;
+    const double w = cum[i + 1] > cum[i] ? (target - cum[i]) / (cum[i + 1] - cum[i]) : 0.5;
+    out.push_back(s0 + len * (static_cast<double>(i) + w) / k);
+  }
+}
+
+}  // namespace
+
+Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field, const SamplingParams& params, SamplingStats* stats_out) {
+  SamplingStats stats;
+  SegmentTable table = domain_segment_table(domain);
+  // Segment id of every edge of the input CDT (hull edges of -c domains get new ids).
+  std::vector<int> edge_seg(cdt.n_edges(), -1);
+  for (auto eh : cdt.edges()) {
+    int s = cdt.data(eh).segment;
+    if (s < 0 && cdt.is_boundary(eh)) {
+      const auto h = cdt.halfedge_handle(eh, 0);
+      s = static_cast<int>(table.size());
+      table.push_back({point2(cdt, cdt.from_vertex_handle(h)), point2(cdt, cdt.to_vertex_handle(h))});
+    }
+    edge_seg[static_cast<std::size_t>(eh.idx())] = s;
+  }
+  auto seg_of = [&](HalfedgeHandle h) { return edge_seg[static_cast<std::size_t>(cdt.edge_handle(h).idx())]; };
+  auto seg_marker = [&](int s) {
+    return static_cast<std::size_t>(s) < domain.segment_markers.size() ? domain.segment_markers[static_cast<std::size_t>(s)] : 0;
+  };
+
+  Domain bd;
+  bd.name = domain.name;
+  bd.holes = domain.holes;
+  std::vector<int> point_input, point_marker, point_seg;  // per point of bd: input index, marker, segment id
+  for (auto vh : cdt.vertices()) {
+    bd.points.push_back(point2(cdt, vh));
+    point_input.push_back(cdt.data(vh).input_index);
+    point_marker.push_back(cdt.data(vh).marker);
+    point_seg.push_back(-1);
+  }
+  const std::size_t n_fixed = bd.points.size();
+
+  // Concentric shells: the first point on every constrained edge at a corner below 60 degrees is at
+  // the same distance from the apex.
+  std::vector<double> shell(cdt.n_vertices(), 0.0);
+  int hint = -1;
+  for (auto vh : cdt.vertices()) {
+    const Point2 v = point2(cdt, vh);
+    bool sharp = false;
+    double shortest = std::numeric_limits<double>::infinity();
+    for (auto h : cdt.voh_range(vh)) {
+      if (seg_of(h) < 0) continue;
+      shortest = std::min(shortest, (point2(cdt, cdt.to_vertex_handle(h)) - v).norm());
+      // Sweep counter-clockwise from h through the faces up to the next constrained edge.
+      double angle = 0;
+      HalfedgeHandle g = h;
+      for (int guard = 0; guard < 100000 && !cdt.is_boundary(g); ++guard) {
+        const Point2 b = point2(cdt, cdt.to_vertex_handle(g));
+        const Point2 c = point2(cdt, cdt.to_vertex_handle(cdt.next_halfedge_handle(g)));
+        angle += std::atan2(std::abs(signed_area2(v, b, c)), (b - v).dot(c - v));
+        g = cdt.opposite_halfedge_handle(cdt.prev_halfedge_handle(g));
+        if (seg_of(g) >= 0) break;
+      }
+      if (!cdt.is_boundary(h) && angle < kPi / 3.0) sharp = true;
+    }
+    if (sharp) {
+      ++stats.small_angle_apices;
+      shell[static_cast<std::size_t>(vh.idx())] = std::min(field.eval(v, hint), shortest / 3.0);
+    }
+  }
+
+  // Divide every constrained edge of the input CDT.
+  std::vector<double> cuts;
+  for (auto eh : cdt.edges()) {
+    const int s = edge_seg[static_cast<std::size_t>(eh.idx())];
+    if (s < 0) continue;
+    const auto h = cdt.halfedge_handle(eh, 0);
+    const auto va = cdt.from_vertex_handle(h), vb = cdt.to_vertex_handle(h);
+    const Point2 a = point2(cdt, va), b = point2(cdt, vb);
+    const double len = (b - a).norm();
+    const Point2 u = (b - a) / len;
+    const double ra = shell[static_cast<std::size_t>(va.idx())], rb = shell[static_cast<std::size_t>(vb.idx())];
+    cuts.clear();
+    if (ra > 0) cuts.push_back(ra);
+    divide(field, a, u, ra, len - rb, hint, cuts);
+    if (rb > 0) cuts.push_back(len - rb);
+    int prev = va.idx();
+    for (double c : cuts) {
+      // Interpolate from the nearer end for accuracy.
+      const Point2 p = c <= 0.5 * len ? Point2(a + c * u) : Point2(b - (len - c) * u);
+      const int idx = static_cast<int>(bd.points.size());
+      bd.points.push_back(p);
+      point_input.push_back(-1);
+      point_marker.push_back(seg_marker(s));
+      point_seg.push_back(s);
+      bd.segments.push_back({prev, idx});
+      bd.segment_markers.push_back(s);  // temporarily: the original segment id
+      prev = idx;
+    }
+    bd.segments.push_back({prev, vb.idx()});
+    bd.segment_markers.push_back(s);
+  }
+  stats.boundary_samples = bd.points.size() - n_fixed;
+  std::vector<int> sub_seg = bd.segment_markers;
+  for (int& m : bd.segment_markers) m = seg_marker(m);
+
+  Mesh mesh = build_cdt(bd);
+
+  if (params.sample_interior) {
+    // Stratified sampling per triangle of the boundary CDT.
+    std::mt19937 rng(params.seed);
+    const double density = 2.0 / std::sqrt(3.0);
+    const double margin = std::sqrt(3.0) / 4.0;
+    struct Tri {
+      Point2 a, b, c;
+      int depth;
+    };
+    std::vector<Tri> stack;
+    std::vector<std::pair<Point2, Point2>> near_segments;
+    const std::size_t n_before = bd.points.size();
+    for (auto fh : mesh.faces()) {
+      const auto fp = face_points(mesh, fh);
+      near_segments.clear();
+      for (auto h : mesh.fh_range(fh)) {
+        const auto pushc = [&](HalfedgeHandle g) {
+          if (is_constrained(mesh, mesh.edge_handle(g)) || mesh.is_boundary(mesh.edge_handle(g)))
+            near_segments.emplace_back(point2(mesh, mesh.from_vertex_handle(g)), point2(mesh, mesh.to_vertex_handle(g)));
+        };
+        pushc(h);
+        const auto o = mesh.opposite_halfedge_handle(h);
+        if (!mesh.is_boundary(o)) {
+          pushc(mesh.next_halfedge_handle(o));
+          pushc(mesh.prev_halfedge_handle(o));
+        }
+      }
+      stack.clear();
+      stack.push_back({fp[0], fp[1], fp[2], 0});
+      while (!stack.empty()) {
+        const Tri t = stack.back();
+        stack.pop_back();
+        const double area = 0.5 * signed_area2(t.a, t.b, t.c);
+        const double h = field.eval((t.a + t.b + t.c) / 3.0, hint);
+        const double expected = area * density / (h * h);
+        if (expected > 1.0 && t.depth < 40) {
+          const Point2 ab = 0.5 * (t.a + t.b), bc = 0.5 * (t.b + t.c), ca = 0.5 * (t.c + t.a);
+          stack.push_back({ca, bc, t.c, t.depth + 1});
+          stack.push_back({ab, t.b, bc, t.depth + 1});
+          stack.push_back({ab, bc, ca, t.depth + 1});
+          stack.push_back({t.a, ab, ca, t.depth + 1});
+          continue;
+        }
+        const double draw = unit(rng);
+        double r1 = unit(rng), r2 = unit(rng);
+        if (draw >= expected) continue;
+        if (r1 + r2 > 1.0) r1 = 1.0 - r1, r2 = 1.0 - r2;
+        const Point2 p = t.a + r1 * (t.b - t.a) + r2 * (t.c - t.a);
+        if (predicates::orient2d(fp[0], fp[1], p) != Sign::Positive || predicates::orient2d(fp[1], fp[2], p) != Sign::Positive ||
+            predicates::orient2d(fp[2], fp[0], p) != Sign::Positive)
+          continue;
+        const double hp = field.eval(p, hint);
+        bool keep = true;
+        for (const auto& [sa, sb] : near_segments)
+          if (segment_distance(p, sa, sb) < margin * hp) {
+            keep = false;
+            break;
+          }
+        if (!keep) continue;
+        bd.points.push_back(p);
+        point_input.push_back(-1);
+        point_marker.push_back(0);
+        point_seg.push_back(-1);
+      }
+    }
+    stats.interior_samples = bd.points.size() - n_before;
+    if (stats.interior_samples > 0) mesh = build_cdt(bd);
+  }
+
+  for (auto vh : mesh.vertices()) {
+    auto& d = mesh.data(vh);
+    const auto i = static_cast<std::size_t>(d.input_index);
+    ACUTE_ASSERT(d.input_index >= 0 && i < bd.points.size());
+    d.marker = point_marker[i];
+    d.segment = point_seg[i];
+    if (i < n_fixed) {
+      d.kind = VertexKind::Input;
+      d.input_index = point_input[i];
+    } else {
+      d.kind = point_seg[i] >= 0 ? VertexKind::OnSegment : VertexKind::Free;
+      d.input_index = -1;
+    }
+  }
+  for (auto eh : mesh.edges()) {
+    auto& d = mesh.data(eh);
+    if (d.segment >= 0) d.segment = sub_seg[static_cast<std::size_t>(d.segment)];
+  }
+  set_segment_table(mesh, std::move(table));
+  if (stats_out) *stats_out = stats;
+  return mesh;
+}
+
+}  // namespace acute

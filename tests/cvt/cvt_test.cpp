@@ -1,0 +1,230 @@
+#include "cvt/cvt_domains.h"
+#include "support/mesh_verify.h"
+
+#include <acute/cvt/cvt.h>
+#include <acute/delaunay/cdt.h>
+#include <acute/mesh/check.h>
+#include <acute/mesh/geometry.h>
+#include <acute/mesh/quality.h>
+#include <acute/mesh/segments.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace acute {
+namespace {
+
+struct Prepared {
+  Mesh mesh;
+  SizeField field;
+};
+
+Prepared prepare(const Domain& d, std::size_t n, unsigned seed = 1) {
+  const Mesh cdt = build_cdt(d);
+  SizeFieldParams sp;
+  sp.target_vertices = n;
+  Prepared p{Mesh(), make_size_field(cdt, sp)};
+  SamplingParams samp;
+  samp.seed = seed;
+  p.mesh = sample_domain(d, cdt, p.field, samp);
+  return p;
+}
+
+/// Every OnSegment vertex on its segment's line, every Input vertex at its domain point.
+void expect_constraints_kept(const Mesh& mesh, const Domain& d) {
+  for (auto vh : mesh.vertices()) {
+    const auto& data = mesh.data(vh);
+    const Point2 p = point2(mesh, vh);
+    if (data.kind == VertexKind::OnSegment) {
+      const auto& [a, b] = segment_endpoints(mesh, data.segment);
+      const Point2 u = (b - a).normalized();
+      const double dist = std::abs((p - a).x() * u.y() - (p - a).y() * u.x());
+      EXPECT_LE(dist, 1e-12 * (b - a).norm()) << d.name << " vertex " << vh.idx() << " off segment " << data.segment;
+      const double t = (p - a).dot(b - a) / (b - a).squaredNorm();
+      EXPECT_GT(t, 0) << d.name << " vertex " << vh.idx();
+      EXPECT_LT(t, 1) << d.name << " vertex " << vh.idx();
+    } else if (data.kind == VertexKind::Input && data.input_index >= 0) {
+      EXPECT_EQ(p, d.points[static_cast<std::size_t>(data.input_index)]) << d.name << " input vertex " << vh.idx() << " moved";
+    }
+  }
+  for (auto eh : mesh.edges()) {
+    if (!mesh.is_boundary(eh)) continue;
+    EXPECT_GE(mesh.data(eh).segment, 0) << d.name << " boundary edge " << eh.idx() << " unconstrained";
+    EXPECT_LT(mesh.data(eh).segment, static_cast<int>(d.segments.size())) << d.name << " edge " << eh.idx();
+  }
+}
+
+TEST(Sampling, marks_kinds_and_original_segment_ids) {
+  for (const Domain& d : {test::unit_square(), test::l_shape(), test::wedge_with_hole()}) {
+    const Mesh cdt = build_cdt(d);
+    SamplingStats stats;
+    const Mesh mesh = sample_domain(d, cdt, local_feature_size_field(cdt, {}), {}, &stats);
+    EXPECT_TRUE(check_mesh(mesh, CheckLevel::Delaunay).ok()) << d.name << ": " << check_mesh(mesh, CheckLevel::Delaunay).summary();
+    EXPECT_EQ(test::verify_valid(mesh), "") << d.name;
+    EXPECT_EQ(segment_table(mesh).size(), d.segments.size()) << d.name;
+    EXPECT_GT(stats.boundary_samples, 0u) << d.name;
+    EXPECT_GT(stats.interior_samples, 0u) << d.name;
+    std::size_t inputs = 0;
+    for (auto vh : mesh.vertices()) inputs += mesh.data(vh).kind == VertexKind::Input;
+    EXPECT_EQ(inputs, d.points.size()) << d.name;
+    expect_constraints_kept(mesh, d);
+    if (d.name == "wedge_with_hole") {
+      EXPECT_EQ(stats.small_angle_apices, 1u) << d.name;
+    }
+  }
+}
+
+TEST(Sampling, small_angle_apex_triangle_is_isosceles) {
+  const Domain d = test::wedge_with_hole();
+  const Mesh cdt = build_cdt(d);
+  const Mesh mesh = sample_domain(d, cdt, SizeField::uniform(0.2), {});
+  for (auto vh : mesh.vertices()) {
+    if (point2(mesh, vh) != Point2(0, 0)) continue;
+    std::vector<double> r;
+    for (auto w : mesh.vv_range(vh))
+      if (mesh.data(w).kind == VertexKind::OnSegment) r.push_back((point2(mesh, w) - point2(mesh, vh)).norm());
+    ASSERT_EQ(r.size(), 2u) << d.name;
+    EXPECT_NEAR(r[0], r[1], 1e-14) << d.name;
+  }
+}
+
+TEST(Sampling, vertex_count_lands_near_target) {
+  for (const Domain& d : {test::unit_square(), test::l_shape()}) {
+    for (std::size_t n : {1000u, 5000u}) {
+      const auto p = prepare(d, n);
+      const double got = static_cast<double>(p.mesh.n_vertices());
+      EXPECT_NEAR(got, static_cast<double>(n), 0.05 * static_cast<double>(n)) << d.name << " target " << n;
+    }
+  }
+}
+
+TEST(Sampling, same_seed_same_mesh_other_seed_other_mesh) {
+  const Domain d = test::l_shape();
+  const auto a = prepare(d, 800, 5), b = prepare(d, 800, 5), c = prepare(d, 800, 6);
+  ASSERT_EQ(a.mesh.n_vertices(), b.mesh.n_vertices()) << d.name;
+  bool same = true;
+  for (auto vh : a.mesh.vertices()) same = same && a.mesh.point(vh) == b.mesh.point(vh);
+  EXPECT_TRUE(same) << d.name;
+  bool differ = a.mesh.n_vertices() != c.mesh.n_vertices();
+  for (std::size_t i = 0; !differ && i < a.mesh.n_vertices(); ++i)
+    differ = a.mesh.point(VertexHandle(static_cast<int>(i))) != c.mesh.point(VertexHandle(static_cast<int>(i)));
+  EXPECT_TRUE(differ) << d.name;
+}
+
+TEST(Lloyd, never_increases_the_energy) {
+  for (const Domain& d : {test::unit_square(), test::l_shape()}) {
+    auto p = prepare(d, 1000);
+    std::vector<double> energies;
+    CvtOptimizeParams params;
+    params.lloyd_iterations = 100;
+    params.lbfgs_iterations = 0;
+    params.move_tolerance = 0;
+    params.energy_tolerance = 0;
+    params.observer = [&](const CvtProgress& pr) { energies.push_back(pr.energy); };
+    const auto res = cvt_optimize(p.mesh, p.field, params);
+    double prev = res.initial_energy;
+    for (std::size_t i = 0; i < energies.size(); ++i) {
+      EXPECT_LE(energies[i], prev * (1 + 1e-13)) << d.name << " iteration " << i + 1;
+      prev = energies[i];
+    }
+    EXPECT_LT(res.energy, res.initial_energy) << d.name;
+    EXPECT_TRUE(check_mesh(p.mesh, CheckLevel::Delaunay).ok()) << d.name << ": " << check_mesh(p.mesh, CheckLevel::Delaunay).summary();
+    expect_constraints_kept(p.mesh, d);
+  }
+}
+
+TEST(Cvt, unit_square_angles_are_near_sixty) {
+  const Domain d = test::unit_square();
+  CvtParams params;
+  params.target_vertices = 1000;
+  const auto res = cvt_mesh(d, params);
+  std::size_t in = 0, total = 0;
+  for (auto fh : res.mesh.faces()) {
+    const auto p = face_points(res.mesh, fh);
+    for (double a : triangle_angles_deg(p[0], p[1], p[2])) in += a >= 50 && a <= 70, ++total;
+  }
+  const double pct = 100.0 * static_cast<double>(in) / static_cast<double>(total);
+  std::cout << "[cvt] unit square " << res.mesh.n_vertices() << " vertices, " << res.iterations << " iterations: " << pct
+            << "% of angles in [50, 70]\n";
+  EXPECT_GE(pct, 80.0) << d.name;
+  EXPECT_TRUE(check_mesh(res.mesh, CheckLevel::Delaunay).ok()) << d.name;
+  expect_constraints_kept(res.mesh, d);
+}
+
+TEST(Cvt, lbfgs_reaches_the_gradient_of_100_lloyd_iterations_faster) {
+  for (const Domain& d : {test::unit_square(), test::l_shape()}) {
+    // Both start from the same mesh after 10 Lloyd iterations (random samples are far from smooth).
+    auto lloyd = prepare(d, 1000);
+    CvtOptimizeParams warm;
+    warm.lloyd_iterations = 10;
+    warm.lbfgs_iterations = 0;
+    cvt_optimize(lloyd.mesh, lloyd.field, warm);
+    Mesh start = lloyd.mesh;
+    CvtOptimizeParams lp;
+    lp.lloyd_iterations = 100;
+    lp.lbfgs_iterations = 0;
+    lp.move_tolerance = 0;
+    lp.energy_tolerance = 0;
+    const auto lr = cvt_optimize(lloyd.mesh, lloyd.field, lp);
+
+    Prepared lbfgs{start, lloyd.field};
+    CvtOptimizeParams bp;
+    bp.lloyd_iterations = 0;
+    bp.lbfgs_iterations = 100;
+    bp.move_tolerance = 0;
+    bp.energy_tolerance = 0;
+    int reached = -1;
+    bp.observer = [&](const CvtProgress& pr) {
+      if (reached < 0 && pr.gradient_norm <= lr.gradient_norm) reached = pr.iteration;
+    };
+    const auto br = cvt_optimize(lbfgs.mesh, lbfgs.field, bp);
+    std::cout << "[cvt] " << d.name << ": Lloyd x100 |g| = " << lr.gradient_norm << " F = " << lr.energy << "; L-BFGS reaches it at iteration "
+              << reached << " (after 100: |g| = " << br.gradient_norm << " F = " << br.energy << ", " << br.fallbacks << " fallbacks)\n";
+    EXPECT_GT(reached, 0) << d.name;
+    EXPECT_LE(reached, 65) << d.name << ": measured 52 (square) and 44-71 (L-shape) while writing this test";
+    EXPECT_TRUE(check_mesh(lbfgs.mesh, CheckLevel::Delaunay).ok()) << d.name;
+    expect_constraints_kept(lbfgs.mesh, d);
+  }
+}
+
+TEST(Cvt, graded_domain_keeps_constraints_and_is_deterministic) {
+  const Domain d = test::wedge_with_hole();
+  CvtParams params;
+  params.lbfgs_iterations = 60;
+  const auto a = cvt_mesh(d, params), b = cvt_mesh(d, params);
+  EXPECT_TRUE(check_mesh(a.mesh, CheckLevel::Delaunay).ok()) << d.name << ": " << check_mesh(a.mesh, CheckLevel::Delaunay).summary();
+  EXPECT_EQ(test::verify_valid(a.mesh), "") << d.name;
+  expect_constraints_kept(a.mesh, d);
+  ASSERT_EQ(a.mesh.n_vertices(), b.mesh.n_vertices()) << d.name;
+  bool same = a.energy == b.energy;
+  for (auto vh : a.mesh.vertices()) same = same && a.mesh.point(vh) == b.mesh.point(vh);
+  EXPECT_TRUE(same) << d.name;
+}
+
+TEST(Cvt, subset_optimisation_moves_only_the_subset) {
+  const Domain d = test::unit_square();
+  auto p = prepare(d, 600);
+  const Mesh before = p.mesh;
+  CvtOptimizeParams params;
+  for (auto vh : p.mesh.vertices())
+    if (point2(p.mesh, vh).x() < 0.3) params.subset.push_back(vh);
+  params.lloyd_iterations = 5;
+  params.lbfgs_iterations = 20;
+  const auto res = cvt_optimize(p.mesh, p.field, params);
+  EXPECT_LT(res.energy, res.initial_energy) << d.name;
+  std::size_t moved = 0;
+  for (auto vh : p.mesh.vertices()) {
+    const bool in = point2(before, vh).x() < 0.3;
+    if (!in) {
+      EXPECT_EQ(p.mesh.point(vh), before.point(vh)) << d.name << " vertex " << vh.idx() << " outside the subset moved";
+    }
+    moved += in && p.mesh.point(vh) != before.point(vh);
+  }
+  EXPECT_GT(moved, 0u) << d.name;
+  EXPECT_TRUE(check_mesh(p.mesh, CheckLevel::Delaunay).ok()) << d.name;
+}
+
+}  // namespace
+}  // namespace acute

@@ -1,0 +1,68 @@
+#include "cvt/cvt_domains.h"
+
+#include <acute/core/errors.h>
+#include <acute/cvt/size_field.h>
+#include <acute/delaunay/cdt.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace acute {
+namespace {
+
+TEST(SizeField, uniform_is_constant) {
+  const SizeField f = SizeField::uniform(0.25);
+  EXPECT_TRUE(f.is_uniform());
+  EXPECT_EQ(f({3, -7}), 0.25);
+  EXPECT_THROW(SizeField::uniform(0), InvalidInput);
+}
+
+TEST(SizeField, piecewise_linear_interpolates_and_clamps_outside) {
+  const SizeField f = SizeField::piecewise_linear({{0, 0}, {1, 0}, {0, 1}, {1, 1}}, {{{0, 1, 3}}, {{0, 3, 2}}}, {1, 2, 3, 4});
+  EXPECT_NEAR(f({0.5, 0.25}), 1 + 0.5 * 1 + 0.25 * 2, 1e-14);
+  EXPECT_NEAR(f({0.25, 0.75}), 1 + 0.25 + 1.5, 1e-14);
+  EXPECT_NEAR(f({2, 0}), 2, 1e-14) << "outside the background: clamped to the nearest triangle";
+  int hint = 1;
+  EXPECT_NEAR(f.eval({0.9, 0.05}, hint), 1 + 0.9 + 0.1, 1e-14);
+  EXPECT_EQ(hint, 0);
+}
+
+TEST(SizeField, vertex_count_formula_inverts) {
+  DomainMeasures m;
+  m.area = 3;
+  m.boundary_length = 8;
+  const double h = size_for_vertex_count(m, 2000);
+  const double n = 2 * m.area / (std::sqrt(3.0) * h * h) + m.boundary_length / (2 * h) + 1;
+  EXPECT_NEAR(n, 2000, 1e-6);
+}
+
+TEST(SizeField, graded_field_meets_gradation_and_clamps) {
+  for (const Domain& d : {test::unit_square(), test::l_shape(), test::wedge_with_hole()}) {
+    const Mesh cdt = build_cdt(d);
+    SizeFieldParams p;
+    const SizeField f = local_feature_size_field(cdt, p);
+    const double diam = measure_domain(cdt).diameter;
+    EXPECT_LE(f.max_value(), diam / 25 * (1 + 1e-12)) << d.name;
+    EXPECT_GT(f.min_value(), 0) << d.name;
+    const auto& pts = f.background_points();
+    const auto& val = f.background_values();
+    for (const auto& t : f.background_triangles())
+      for (int i = 0; i < 3; ++i) {
+        const auto a = static_cast<std::size_t>(t[static_cast<std::size_t>(i)]), b = static_cast<std::size_t>(t[static_cast<std::size_t>((i + 1) % 3)]);
+        EXPECT_LE(std::abs(val[a] - val[b]), 0.3 * (pts[a] - pts[b]).norm() * (1 + 1e-9) + 1e-15) << d.name << " edge " << a << "-" << b;
+      }
+  }
+}
+
+TEST(SizeField, graded_field_is_small_near_close_features) {
+  const Domain d = test::wedge_with_hole();
+  const Mesh cdt = build_cdt(d);
+  const SizeField f = local_feature_size_field(cdt, {});
+  // The hole corner (2.4, 0.5) is 0.5 from the bottom segment.
+  EXPECT_LE(f({2.4, 0.5}), 0.5 + 1e-12) << d.name;
+  EXPECT_LE(f({2.4, 0.0}), 0.5 + 1e-12) << d.name << ": the foot of that feature on the segment";
+}
+
+}  // namespace
+}  // namespace acute

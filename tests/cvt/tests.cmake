@@ -1,0 +1,6 @@
+acute_add_test(cvt_tests
+  SOURCES
+    cvt/size_field_test.cpp
+    cvt/voronoi_test.cpp
+    cvt/cvt_test.cpp
+  LIBS acute_cvt)
