@@ -59,7 +59,7 @@ Sign incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d
   const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
   // perm = sum of |monomials| <= alift*blift + alift*clift + blift*clift, because
   // |bdx*cdy| + |cdx*bdy| <= (blift + clift) / 2 (AM-GM), and so on cyclically. Cheaper than the
-  // exact permanent (no absolute values, 3 products fewer) and only slightly looser.
+  // exact permanent (no absolute values, 2 products instead of 3) and only slightly looser.
   const double perm = alift * (blift + clift) + blift * clift;
   const double bound = detail::kIncircleBound * perm;
   // Branch-free sign when certified: the only branch (to the exact stage) is almost never taken,
