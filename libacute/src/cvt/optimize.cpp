@@ -151,8 +151,15 @@ class Optimizer {
         if (m.segment >= 0) target = project_on_segment(mesh_, m.segment, target);
       }
       if (!moved) ++blocked_;
-      if (moved) push_star_edges(mesh_, m.vh, queue_);
+      if (moved) moved_.push_back(m.vh);
     }
+    // Many moves: every edge once is cheaper than the stars (each edge would come up ~4 times).
+    if (moved_.size() * 4 > mesh_.n_vertices()) {
+      for (auto eh : mesh_.edges()) queue_.push_back(eh);
+    } else {
+      for (VertexHandle vh : moved_) push_star_edges(mesh_, vh, queue_);
+    }
+    moved_.clear();
     flips_ = restore_delaunay(mesh_, queue_);
   }
 
@@ -180,6 +187,7 @@ class Optimizer {
   std::vector<unsigned> face_stamp_;
   unsigned stamp_ = 0;
   std::vector<EdgeHandle> queue_;
+  std::vector<VertexHandle> moved_;
   Eigen::VectorXd grad_;
   double energy_ = 0, max_move_ = 0;
   std::size_t flips_ = 0, blocked_ = 0;

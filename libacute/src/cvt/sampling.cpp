@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <random>
 
 namespace acute {
@@ -64,6 +66,59 @@ void divide(const SizeField& field, const Point2& a, const Point2& u, double s0,
     const double w = cum[i + 1] > cum[i] ? (target - cum[i]) / (cum[i + 1] - cum[i]) : 0.5;
     out.push_back(s0 + len * (static_cast<double>(i) + w) / k);
   }
+}
+
+/// Sorts points along a Z-order curve (memory locality of the mesh built from them).
+void sort_morton(std::vector<Point2>::iterator first, std::vector<Point2>::iterator last) {
+  if (last - first < 2) return;
+  double xmin = first->x(), xmax = xmin, ymin = first->y(), ymax = ymin;
+  for (auto it = first; it != last; ++it)
+    xmin = std::min(xmin, it->x()), xmax = std::max(xmax, it->x()), ymin = std::min(ymin, it->y()), ymax = std::max(ymax, it->y());
+  const double scale = 65535.0 / std::max({xmax - xmin, ymax - ymin, std::numeric_limits<double>::min()});
+  auto spread = [](std::uint32_t v) {
+    v = (v | (v << 8)) & 0x00FF00FFu;
+    v = (v | (v << 4)) & 0x0F0F0F0Fu;
+    v = (v | (v << 2)) & 0x33333333u;
+    v = (v | (v << 1)) & 0x55555555u;
+    return v;
+  };
+  std::vector<std::pair<std::uint32_t, Point2>> keyed;
+  keyed.reserve(static_cast<std::size_t>(last - first));
+  for (auto it = first; it != last; ++it) {
+    const auto qx = static_cast<std::uint32_t>((it->x() - xmin) * scale), qy = static_cast<std::uint32_t>((it->y() - ymin) * scale);
+    keyed.emplace_back(spread(qx) | (spread(qy) << 1), *it);
+  }
+  std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (auto& k : keyed) *first++ = k.second;
+}
+
+/// A copy of the mesh with its faces (hence half-edges) in the order of their smallest vertex
+/// index: with Z-ordered vertices, the face loops of the optimiser then walk memory coherently.
+Mesh with_coherent_faces(const Mesh& in) {
+  std::vector<std::array<int, 4>> faces;  // min vertex, then the three corners from that one
+  faces.reserve(in.n_faces());
+  for (auto fh : in.faces()) {
+    int v[3], k = 0;
+    for (auto vh : in.fv_range(fh)) v[k++] = vh.idx();
+    const int r = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+    faces.push_back({v[r], v[(r + 1) % 3], v[(r + 2) % 3], 0});
+  }
+  std::sort(faces.begin(), faces.end());
+  Mesh out;
+  out.reserve(in.n_vertices(), in.n_edges(), in.n_faces());
+  for (auto vh : in.vertices()) {
+    const auto nv = out.add_vertex(in.point(vh));
+    out.data(nv) = in.data(vh);
+  }
+  for (const auto& f : faces) out.add_face(VertexHandle(f[0]), VertexHandle(f[1]), VertexHandle(f[2]));
+  for (auto eh : in.edges()) {
+    if (in.data(eh).segment < 0) continue;
+    const auto h = in.halfedge_handle(eh, 0);
+    const auto oh = out.find_halfedge(in.from_vertex_handle(h), in.to_vertex_handle(h));
+    ACUTE_ASSERT(oh.is_valid());
+    out.data(out.edge_handle(oh)) = in.data(eh);
+  }
+  return out;
 }
 
 }  // namespace
@@ -231,6 +286,7 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
       }
     }
     stats.interior_samples = bd.points.size() - n_before;
+    sort_morton(bd.points.begin() + static_cast<std::ptrdiff_t>(n_before), bd.points.end());
     if (stats.interior_samples > 0) mesh = build_cdt(bd);
   }
 
@@ -252,6 +308,7 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     auto& d = mesh.data(eh);
     if (d.segment >= 0) d.segment = sub_seg[static_cast<std::size_t>(d.segment)];
   }
+  mesh = with_coherent_faces(mesh);
   set_segment_table(mesh, std::move(table));
   if (stats_out) *stats_out = stats;
   return mesh;
