@@ -8,6 +8,8 @@
 #include <acute/repair/clusters.h>
 #include <acute/repair/relocation.h>
 
+#include "repair/region.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -130,98 +132,143 @@ class Repairer {
   }
 
   void iterate(const std::vector<Cluster>& clusters, bool global, int it) {
-    // 1. Smoothing: globally over every vertex near trouble, then only around the clusters.
-    std::vector<VertexHandle> region;
-    for (const auto& c : clusters) region.insert(region.end(), c.vertices.begin(), c.vertices.end());
-    const int rings = global ? 2 : 1 + (it / 10) % 3;
-    smooth(grow(region, rings), 3);
-
-    // 2. Topology: interior vertices of degree <= 4 always make an angle >= 90; remove them.
-    for (auto vh : grow(region, 1)) {
-      if (mesh_.status(vh).deleted() || mesh_.data(vh).kind != VertexKind::Free || mesh_.is_boundary(vh)) continue;
-      if (mesh_.valence(vh) <= 4 && remove_vertex(mesh_, vh)) ++result_.removed;
+    if (global) {
+      // Global phase: relocate every vertex whose star is near the bounds, over the whole mesh.
+      std::vector<VertexHandle> near;
+      for (auto vh : mesh_.vertices())
+        if (!is_input(mesh_, vh) && star_margin(mesh_, vh, bounds_, forced_) < 8.0) near.push_back(vh);
+      smooth(near, 2);
     }
-
-    // 3. Still-bad triangles of the clusters: insert for large angles, collapse for small ones.
-    std::vector<VertexHandle> touched;
+    // Local phase: each cluster's neighbourhood is copied, candidate operations are tried on the
+    // copy, and the best one is written back when it improves the region.
+    const int rings = 1 + it % 3;
     for (const auto& c : clusters) {
-      for (auto fh : c.bad) {
-        if (mesh_.status(fh).deleted() || !is_bad_triangle(mesh_, fh, bounds_, forced_)) continue;
-        const VertexHandle vh = fix_triangle(fh);
-        if (vh.is_valid()) touched.push_back(vh);
-        break;  // one operation per cluster and iteration, then smooth again
+      bool stale = false;
+      for (auto fh : c.bad) stale = stale || mesh_.status(fh).deleted();
+      for (auto vh : c.vertices) stale = stale || mesh_.status(vh).deleted();
+      if (stale) continue;
+      std::vector<VertexHandle> movable;
+      for (auto vh : grow(c.vertices, rings - 1))
+        if (!mesh_.status(vh).deleted()) movable.push_back(vh);
+      detail::Region region;
+      if (!detail::extract_region(mesh_, movable, forced_, region)) continue;
+      const Score base = score(region.sub, region.forced);
+      Mesh best;
+      Score best_score = base;
+      try_candidates(region, best, best_score);
+      if (best_score < base) {
+        detail::commit_region(mesh_, region, best);
+        forced_.resize(mesh_.n_vertices(), false);
+        ++result_.committed;
       }
     }
-    std::vector<VertexHandle> alive;
-    for (auto vh : touched)
-      if (!mesh_.status(vh).deleted()) alive.push_back(vh);
-    smooth(grow(alive, 1), 2);
   }
 
-  /// One operation on a bad triangle. Returns a vertex whose neighbourhood changed.
-  VertexHandle fix_triangle(FaceHandle fh) {
-    const auto v = face_vertices(mesh_, fh);
-    const auto p = face_points(mesh_, fh);
+  /// Lexicographic: fewer bad triangles, then a larger worst margin.
+  struct Score {
+    std::size_t bad = 0;
+    double worst = INFINITY;
+    bool operator<(const Score& o) const { return bad != o.bad ? bad < o.bad : worst > o.worst + 1e-9; }
+  };
+
+  Score score(const Mesh& sub, const std::vector<bool>& forced) const {
+    Score s;
+    for (auto fh : sub.faces()) {
+      const double m = triangle_margin(sub, fh, bounds_, face_is_exempt(sub, fh, forced));
+      s.worst = std::min(s.worst, m);
+      s.bad += m < bounds_.margin_deg;
+    }
+    return s;
+  }
+
+  static bool face_is_exempt(const Mesh& mesh, FaceHandle fh, const std::vector<bool>& forced) {
+    for (auto vh : mesh.fv_range(fh)) {
+      const auto i = static_cast<std::size_t>(vh.idx());
+      if (i < forced.size() && forced[i]) return true;
+    }
+    return false;
+  }
+
+  /// Relocates the movable vertices of a region copy (a few sweeps, Delaunay restored after each move).
+  void smooth_sub(Mesh& sub, const std::vector<bool>& forced, int sweeps) {
+    std::vector<EdgeHandle> queue;
+    for (int s = 0; s < sweeps; ++s) {
+      bool moved = false;
+      for (auto vh : sub.vertices()) {
+        if (sub.status(vh).deleted() || is_input(sub, vh)) continue;
+        if (relocate_for_angles(sub, vh, bounds_, forced)) {
+          moved = true;
+          queue.clear();
+          push_star_edges(sub, vh, queue);
+          restore_delaunay(sub, queue);
+        }
+      }
+      if (!moved) break;
+    }
+  }
+
+  /// Tries the operations on copies of the region; keeps the best scoring result in `best`.
+  void try_candidates(const detail::Region& region, Mesh& best, Score& best_score) {
+    const Mesh& sub0 = region.sub;
+    const auto& forced = region.forced;
+    auto attempt = [&](auto&& operation) {
+      Mesh sub = sub0;
+      if (!operation(sub)) return;  // (no garbage collection: sub vertex indices map to the big mesh)
+      smooth_sub(sub, forced, 3);
+      const Score s = score(sub, forced);
+      if (s < best_score) {
+        best_score = s;
+        best = std::move(sub);
+      }
+    };
+    attempt([](Mesh&) { return true; });  // smoothing alone
+
+    // The worst face of the region drives the topological candidates.
+    FaceHandle worst;
+    double worst_margin = INFINITY;
+    for (auto fh : sub0.faces()) {
+      const double m = triangle_margin(sub0, fh, bounds_, face_is_exempt(sub0, fh, forced));
+      if (m < worst_margin) worst_margin = m, worst = fh;
+    }
+    if (!worst.is_valid() || worst_margin >= bounds_.margin_deg) return;
+    const auto v = face_vertices(sub0, worst);
+    const auto p = face_points(sub0, worst);
     const auto a = angles_deg(p[0], p[1], p[2]);
     const int kmax = static_cast<int>(std::max_element(a.begin(), a.end()) - a.begin());
     const int kmin = static_cast<int>(std::min_element(a.begin(), a.end()) - a.begin());
-    const bool exempt = forced(v[0]) || forced(v[1]) || forced(v[2]);
-    if (a[kmax] >= bounds_.max_deg - bounds_.margin_deg) return fix_large_angle(fh, v, p, kmax);
-    if (!exempt && a[kmin] < bounds_.min_deg + bounds_.margin_deg) return fix_small_angle(fh, v, p, kmin);
-    return VertexHandle();
-  }
+    const FaceHandle worst_face = worst;
 
-  /// The edge opposite corner k of face fh.
-  EdgeHandle opposite_edge(FaceHandle fh, const std::array<VertexHandle, 3>& v, int k) {
-    return mesh_.edge_handle(mesh_.find_halfedge(v[(k + 1) % 3], v[(k + 2) % 3]));
-  }
+    // Insertions: on the edge opposite the largest angle (midpoint, altitude foot), circumcentre, centroid.
+    const Point2 ea = p[(kmax + 1) % 3], eb = p[(kmax + 2) % 3], ec = p[kmax];
+    const double t_foot = std::clamp((ec - ea).dot(eb - ea) / (eb - ea).squaredNorm(), 0.25, 0.75);
+    const VertexHandle va = v[(kmax + 1) % 3], vb = v[(kmax + 2) % 3];
+    for (double t : {0.5, t_foot})
+      attempt([&, t](Mesh& sub) {
+        const EdgeHandle eh = sub.edge_handle(sub.find_halfedge(va, vb));
+        if (sub.is_boundary(eh) && !is_constrained(sub, eh)) return false;  // frozen ring edge
+        return split_edge(sub, eh, ea + t * (eb - ea)).is_valid();
+      });
+    for (const Point2& q : {circumcenter(p[0], p[1], p[2]), Point2((p[0] + p[1] + p[2]) / 3.0)})
+      attempt([&, q](Mesh& sub) {
+        const VertexHandle vh = insert_point(sub, q, worst_face);
+        return vh.is_valid() && !is_input(sub, vh);
+      });
 
-  VertexHandle fix_large_angle(FaceHandle fh, const std::array<VertexHandle, 3>& v, const std::array<Point2, 3>& p, int k) {
-    const EdgeHandle ab = opposite_edge(fh, v, k);
-    const Point2 a = p[(k + 1) % 3], b = p[(k + 2) % 3], c = p[k];
-    if (is_constrained(mesh_, ab) || mesh_.is_boundary(ab)) {
-      // Drop the altitude from the obtuse corner onto the segment.
-      const Point2 d = b - a;
-      const double t = std::clamp((c - a).dot(d) / d.squaredNorm(), 0.3, 0.7);
-      const VertexHandle vh = split_edge(mesh_, ab, a + t * d);
-      if (vh.is_valid()) ++result_.inserted;
-      return vh;
-    }
-    // Interior edge: the circumcentre lies beyond it; insert it if reachable, else the midpoint.
-    const Point2 cc = circumcenter(p[0], p[1], p[2]);
-    EdgeHandle blocked;
-    VertexHandle vh = insert_point(mesh_, cc, fh, &blocked);
-    if (!vh.is_valid() && blocked.is_valid()) {
-      const auto h = mesh_.halfedge_handle(blocked, 0);
-      const Point2 s0 = point2(mesh_, mesh_.from_vertex_handle(h)), s1 = point2(mesh_, mesh_.to_vertex_handle(h));
-      vh = split_edge(mesh_, blocked, 0.5 * (s0 + s1));
-    }
-    if (!vh.is_valid() || vh == v[0] || vh == v[1] || vh == v[2]) vh = split_edge(mesh_, ab, 0.5 * (a + b));
-    if (vh.is_valid()) ++result_.inserted;
-    return vh;
-  }
-
-  VertexHandle fix_small_angle(FaceHandle fh, const std::array<VertexHandle, 3>& v, const std::array<Point2, 3>& p, int k) {
-    // The short edge opposite the small angle: merge its ends when one of them may go.
-    const VertexHandle b = v[(k + 1) % 3], c = v[(k + 2) % 3];
-    for (auto [from, to] : {std::pair{b, c}, std::pair{c, b}}) {
-      const auto heh = mesh_.find_halfedge(from, to);
-      if (heh.is_valid() && can_collapse(mesh_, heh) == OpVerdict::Ok) {
-        collapse(mesh_, heh);
-        ++result_.removed;
-        return to;
-      }
-    }
-    // Otherwise remove a free vertex of the triangle, or refine with the circumcentre.
+    // Removals: collapse the edge opposite the smallest angle, or remove a corner of the worst face.
+    const VertexHandle vb2 = v[(kmin + 1) % 3], vc2 = v[(kmin + 2) % 3];
+    for (auto [from, to] : {std::pair{vb2, vc2}, std::pair{vc2, vb2}})
+      attempt([&, from = from, to = to](Mesh& sub) {
+        const auto heh = sub.find_halfedge(from, to);
+        if (!heh.is_valid() || can_collapse(sub, heh) != OpVerdict::Ok) return false;
+        collapse(sub, heh);
+        return true;
+      });
     for (auto vh : v)
-      if (!is_input(mesh_, vh) && remove_vertex(mesh_, vh)) {
-        ++result_.removed;
-        return v[k] == vh ? b : v[k];
-      }
-    const Point2 cc = circumcenter(p[0], p[1], p[2]);
-    const VertexHandle vh = insert_point(mesh_, cc, fh);
-    if (vh.is_valid()) ++result_.inserted;
-    return vh;
+      attempt([&, vh](Mesh& sub) { return !is_input(sub, vh) && remove_vertex(sub, vh); });
+    // Interior vertices of degree <= 4 always make an angle of at least 90 degrees.
+    for (auto vh : sub0.vertices())
+      if (!is_input(sub0, vh) && !sub0.is_boundary(vh) && sub0.valence(vh) <= 4)
+        attempt([&, vh](Mesh& sub) { return remove_vertex(sub, vh); });
   }
 
   Mesh& mesh_;

@@ -34,6 +34,7 @@ struct RepairResult {
   int iterations = 0;
   std::size_t bad_before = 0, bad_after = 0;
   std::size_t inserted = 0, removed = 0, relocated = 0;
+  std::size_t committed = 0;  ///< cluster edits written back
 };
 
 /// Repairs the mesh in place; on return the mesh is the best one seen (fewest bad triangles),

@@ -1,0 +1,116 @@
+#include "repair/region.h"
+
+#include <acute/core/errors.h>
+#include <acute/mesh/segments.h>
+
+#include <algorithm>
+
+namespace acute::detail {
+
+bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const std::vector<bool>& big_forced, Region& region) {
+  std::vector<char> is_movable(big.n_vertices(), 0);
+  for (auto vh : movable) is_movable[static_cast<std::size_t>(vh.idx())] = 1;
+  std::vector<char> in_region(big.n_faces(), 0);
+  std::vector<FaceHandle> faces;
+  auto add_faces_of = [&](VertexHandle vh) {
+    for (auto fh : big.vf_range(vh))
+      if (!in_region[static_cast<std::size_t>(fh.idx())]) {
+        in_region[static_cast<std::size_t>(fh.idx())] = 1;
+        faces.push_back(fh);
+      }
+  };
+  for (auto vh : movable) add_faces_of(vh);
+  // A ring vertex touched by the region in several fans would become a complex vertex: absorb it.
+  for (int pass = 0; pass < 4; ++pass) {
+    std::vector<VertexHandle> absorb;
+    for (auto fh : faces)
+      for (auto vh : big.fv_range(fh)) {
+        if (is_movable[static_cast<std::size_t>(vh.idx())]) continue;
+        int transitions = 0;
+        for (auto heh : big.voh_range(vh)) {
+          const FaceHandle a = big.face_handle(heh);
+          const FaceHandle b = big.face_handle(big.opposite_halfedge_handle(heh));
+          const bool ia = a.is_valid() && in_region[static_cast<std::size_t>(a.idx())];
+          const bool ib = b.is_valid() && in_region[static_cast<std::size_t>(b.idx())];
+          transitions += ia != ib;
+        }
+        if (transitions > 2) {
+          is_movable[static_cast<std::size_t>(vh.idx())] = 1;
+          absorb.push_back(vh);
+        }
+      }
+    if (absorb.empty()) break;
+    for (auto vh : absorb) {
+      movable.push_back(vh);
+      add_faces_of(vh);
+    }
+  }
+  if (faces.empty()) return false;
+
+  region = Region{};
+  Mesh& sub = region.sub;
+  std::vector<VertexHandle> to_sub(big.n_vertices());
+  auto map_vertex = [&](VertexHandle vh) {
+    auto& slot = to_sub[static_cast<std::size_t>(vh.idx())];
+    if (!slot.is_valid()) {
+      slot = sub.add_vertex(big.point(vh));
+      sub.data(slot) = big.data(vh);
+      const bool frozen = !is_movable[static_cast<std::size_t>(vh.idx())];
+      if (frozen) sub.data(slot).kind = VertexKind::Input;
+      region.to_big.push_back(frozen ? vh : VertexHandle());
+      const auto i = static_cast<std::size_t>(vh.idx());
+      region.forced.push_back(i < big_forced.size() && big_forced[i]);
+    }
+    return slot;
+  };
+  for (auto fh : faces) {
+    VertexHandle v[3];
+    int k = 0;
+    for (auto vh : big.fv_range(fh)) v[k++] = map_vertex(vh);
+    if (!sub.add_face(v[0], v[1], v[2]).is_valid()) return false;
+  }
+  for (auto fh : faces)
+    for (auto heh : big.fh_range(fh)) {
+      const auto sh = sub.find_halfedge(to_sub[static_cast<std::size_t>(big.from_vertex_handle(heh).idx())],
+                                        to_sub[static_cast<std::size_t>(big.to_vertex_handle(heh).idx())]);
+      sub.data(sub.edge_handle(sh)) = big.data(big.edge_handle(heh));
+    }
+  set_segment_table(sub, segment_table(big));
+  region.big_faces = std::move(faces);
+  for (auto vh : movable) region.big_inner.push_back(vh);
+  return true;
+}
+
+std::vector<VertexHandle> commit_region(Mesh& big, const Region& region, const Mesh& sub) {
+  for (auto fh : region.big_faces)
+    if (!big.status(fh).deleted()) big.delete_face(fh, false);
+  for (auto vh : region.big_inner)
+    if (!big.status(vh).deleted()) big.delete_vertex(vh, false);
+  std::vector<VertexHandle> to_big(sub.n_vertices());
+  std::vector<VertexHandle> created;
+  for (auto vh : sub.vertices()) {
+    const auto i = static_cast<std::size_t>(vh.idx());
+    if (i < region.to_big.size() && region.to_big[i].is_valid()) {
+      to_big[i] = region.to_big[i];
+    } else {
+      to_big[i] = big.add_vertex(sub.point(vh));
+      big.data(to_big[i]) = sub.data(vh);
+      created.push_back(to_big[i]);
+    }
+  }
+  for (auto fh : sub.faces()) {
+    VertexHandle v[3];
+    int k = 0;
+    for (auto vh : sub.fv_range(fh)) v[k++] = to_big[static_cast<std::size_t>(vh.idx())];
+    if (!big.add_face(v[0], v[1], v[2]).is_valid()) throw InternalError("commit_region: face rejected by the mesh");
+  }
+  for (auto eh : sub.edges()) {
+    const auto h = sub.halfedge_handle(eh, 0);
+    const auto bh = big.find_halfedge(to_big[static_cast<std::size_t>(sub.from_vertex_handle(h).idx())],
+                                      to_big[static_cast<std::size_t>(sub.to_vertex_handle(h).idx())]);
+    if (bh.is_valid()) big.data(big.edge_handle(bh)) = sub.data(eh);
+  }
+  return created;
+}
+
+}  // namespace acute::detail
