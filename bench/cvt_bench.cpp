@@ -77,6 +77,7 @@ void iterations(benchmark::State& state, bool lbfgs) {
     p.lloyd_iterations = lbfgs ? 0 : kIters;
     p.lbfgs_iterations = lbfgs ? kIters : 0;
     p.move_tolerance = 0;
+    p.max_move_tolerance = 0;
     p.energy_tolerance = 0;
     const std::clock_t t0 = std::clock();  // CPU time: the machine is shared
     const auto r = acute::cvt_optimize(m, s.field, p);

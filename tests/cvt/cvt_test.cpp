@@ -121,6 +121,7 @@ TEST(Lloyd, never_increases_the_energy) {
     params.lloyd_iterations = 100;
     params.lbfgs_iterations = 0;
     params.move_tolerance = 0;
+    params.max_move_tolerance = 0;
     params.energy_tolerance = 0;
     params.observer = [&](const CvtProgress& pr) { energies.push_back(pr.energy); };
     const auto res = cvt_optimize(p.mesh, p.field, params);
@@ -166,6 +167,7 @@ TEST(Cvt, lbfgs_reaches_the_gradient_of_100_lloyd_iterations_faster) {
     lp.lloyd_iterations = 100;
     lp.lbfgs_iterations = 0;
     lp.move_tolerance = 0;
+    lp.max_move_tolerance = 0;
     lp.energy_tolerance = 0;
     const auto lr = cvt_optimize(lloyd.mesh, lloyd.field, lp);
 
@@ -174,6 +176,7 @@ TEST(Cvt, lbfgs_reaches_the_gradient_of_100_lloyd_iterations_faster) {
     bp.lloyd_iterations = 0;
     bp.lbfgs_iterations = 100;
     bp.move_tolerance = 0;
+    bp.max_move_tolerance = 0;
     bp.energy_tolerance = 0;
     int reached = -1;
     bp.observer = [&](const CvtProgress& pr) {

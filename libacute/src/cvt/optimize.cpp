@@ -74,6 +74,7 @@ class Optimizer {
     energy_ = cells_.energy;
     grad_.resize(num_vars_);
     max_move_ = 0;
+    double sum2 = 0;
     for (const auto& m : movers_) {
       const auto i = static_cast<std::size_t>(m.vh.idx());
       const Point2 v = point2(mesh_, m.vh);
@@ -82,13 +83,18 @@ class Optimizer {
       const double h = std::pow(ws_.vertex_rho[i], -0.25);
       if (m.segment >= 0) {
         grad_[m.offset] = g.dot(m.dir);
-        max_move_ = std::max(max_move_, std::abs(grad_[m.offset]) / (2.0 * mass * h));
+        const double r = std::abs(grad_[m.offset]) / (2.0 * mass * h);
+        max_move_ = std::max(max_move_, r);
+        sum2 += r * r;
       } else {
         grad_[m.offset] = g.x();
         grad_[m.offset + 1] = g.y();
-        max_move_ = std::max(max_move_, g.norm() / (2.0 * mass * h));
+        const double r = g.norm() / (2.0 * mass * h);
+        max_move_ = std::max(max_move_, r);
+        sum2 += r * r;
       }
     }
+    rms_move_ = movers_.empty() ? 0.0 : std::sqrt(sum2 / static_cast<double>(movers_.size()));
   }
 
   void get_x(Eigen::VectorXd& x) const {
@@ -166,6 +172,7 @@ class Optimizer {
   double energy() const { return energy_; }
   const Eigen::VectorXd& gradient() const { return grad_; }
   double max_move() const { return max_move_; }
+  double rms_move() const { return rms_move_; }
   std::size_t flips() const { return flips_; }
   std::size_t blocked() const { return blocked_; }
 
@@ -189,7 +196,7 @@ class Optimizer {
   std::vector<EdgeHandle> queue_;
   std::vector<VertexHandle> moved_;
   Eigen::VectorXd grad_;
-  double energy_ = 0, max_move_ = 0;
+  double energy_ = 0, max_move_ = 0, rms_move_ = 0;
   std::size_t flips_ = 0, blocked_ = 0;
 };
 
@@ -202,6 +209,7 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
   res.initial_energy = res.energy = opt.energy();
   res.gradient_norm = opt.gradient().norm();
   res.max_move = opt.max_move();
+  res.rms_move = opt.rms_move();
   if (opt.num_vars() == 0) {
     res.converged = true;
     return res;
@@ -211,6 +219,7 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
     res.energy = opt.energy();
     res.gradient_norm = opt.gradient().norm();
     res.max_move = opt.max_move();
+    res.rms_move = opt.rms_move();
     if (params.observer) {
       CvtProgress p;
       p.phase = phase;
@@ -218,6 +227,7 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
       p.energy = res.energy;
       p.gradient_norm = res.gradient_norm;
       p.max_move = res.max_move;
+      p.rms_move = res.rms_move;
       p.flips = opt.flips();
       p.blocked = opt.blocked();
       p.fallback = fallback;
@@ -225,7 +235,7 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
     }
   };
   auto done = [&](double previous_energy) {
-    if (opt.max_move() < params.move_tolerance) return true;
+    if (opt.rms_move() < params.move_tolerance || opt.max_move() < params.max_move_tolerance) return true;
     return std::abs(previous_energy - opt.energy()) <= params.energy_tolerance * std::abs(opt.energy());
   };
 

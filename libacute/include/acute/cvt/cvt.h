@@ -23,6 +23,7 @@ struct CvtProgress {
   double energy = 0;             ///< F after the iteration
   double gradient_norm = 0;      ///< |dF/dX| over the moving coordinates (Euclidean)
   double max_move = 0;           ///< max over moving vertices of |v - c_v| / h(v) (projected on segments)
+  double rms_move = 0;           ///< root mean square of the same
   std::size_t flips = 0;         ///< Delaunay flips done after the step
   std::size_t blocked = 0;       ///< vertices whose move had to be shortened or dropped
   bool fallback = false;         ///< lbfgs: the line search failed, a Lloyd step was taken
@@ -32,8 +33,9 @@ struct CvtOptimizeParams {
   int lloyd_iterations = 10;     ///< Lloyd steps first (robust start from random samples)
   int lbfgs_iterations = 200;    ///< then at most this many L-BFGS iterations
   int lbfgs_memory = 7;          ///< stored correction pairs (geogram's default)
-  double move_tolerance = 1e-4;  ///< stop when max |v - c_v| / h(v) < this
-  double energy_tolerance = 1e-12;  ///< stop when |dF| <= this * F over an iteration
+  double move_tolerance = 1e-3;      ///< stop when rms |v - c_v| / h(v) < this
+  double max_move_tolerance = 1e-4;  ///< or when max |v - c_v| / h(v) < this
+  double energy_tolerance = 1e-12;   ///< or when |dF| <= this * F over an iteration
   /// Vertices allowed to move (Input vertices are ignored); empty: every non-input vertex. With a
   /// subset, the energy is taken over the faces around it only (local smoothing).
   std::vector<VertexHandle> subset;
@@ -48,6 +50,7 @@ struct CvtOptimizeResult {
   double energy = 0;
   double gradient_norm = 0;
   double max_move = 0;
+  double rms_move = 0;
   bool converged = false;         ///< a tolerance was met (not the iteration cap)
 };
 
@@ -67,7 +70,7 @@ struct CvtParams {
   double hmax = 0;                 ///< 0: diameter / 25
   int lloyd_iterations = 10;
   int lbfgs_iterations = 200;
-  double move_tolerance = 1e-4;
+  double move_tolerance = 1e-3;     ///< rms |v - c_v| / h(v) to stop at
   unsigned seed = 1;
   std::function<void(const CvtProgress&)> observer;
 };
