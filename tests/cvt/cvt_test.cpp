@@ -100,6 +100,20 @@ TEST(Sampling, vertex_count_lands_near_target) {
   }
 }
 
+TEST(Sampling, graded_vertex_count_lands_near_target) {
+  const Domain d = test::wedge_with_hole();
+  const Mesh cdt = build_cdt(d);
+  for (std::size_t n : {1000u, 4000u}) {
+    SizeFieldParams sp;
+    sp.target_vertices = n;
+    sp.graded = true;
+    const SizeField f = make_size_field(cdt, sp);
+    EXPECT_FALSE(f.is_uniform()) << d.name;
+    const Mesh mesh = sample_domain(d, cdt, f, {});
+    EXPECT_NEAR(static_cast<double>(mesh.n_vertices()), static_cast<double>(n), 0.1 * static_cast<double>(n)) << d.name << " target " << n;
+  }
+}
+
 TEST(Sampling, same_seed_same_mesh_other_seed_other_mesh) {
   const Domain d = test::l_shape();
   const auto a = prepare(d, 800, 5), b = prepare(d, 800, 5), c = prepare(d, 800, 6);

@@ -317,6 +317,7 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   SizeFieldParams sp;
   sp.size = params.size;
   sp.target_vertices = params.target_vertices;
+  sp.graded = params.graded;
   sp.gradation = params.gradation;
   sp.lfs_factor = params.lfs_factor;
   sp.hmax = params.hmax;

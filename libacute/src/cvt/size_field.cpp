@@ -148,10 +148,29 @@ double size_for_vertex_count(const DomainMeasures& measures, std::size_t n) {
 double predicted_vertex_count(const Mesh& mesh, const SizeField& field) {
   double n = 1.0;
   int hint = -1;
+  struct Tri {
+    Point2 a, b, c;
+    int depth;
+  };
+  std::vector<Tri> stack;
   for (auto fh : mesh.faces()) {
     const auto p = face_points(mesh, fh);
-    const double h = field.eval((p[0] + p[1] + p[2]) / 3.0, hint);
-    n += 0.5 * signed_area2(p[0], p[1], p[2]) * 2.0 / (std::sqrt(3.0) * h * h);
+    stack.push_back({p[0], p[1], p[2], 0});
+    while (!stack.empty()) {
+      const Tri t = stack.back();
+      stack.pop_back();
+      const double h = field.eval((t.a + t.b + t.c) / 3.0, hint);
+      const double area = 0.5 * signed_area2(t.a, t.b, t.c);
+      if (!field.is_uniform() && area > 4.0 * h * h && t.depth < 12) {
+        const Point2 ab = 0.5 * (t.a + t.b), bc = 0.5 * (t.b + t.c), ca = 0.5 * (t.c + t.a);
+        stack.push_back({t.a, ab, ca, t.depth + 1});
+        stack.push_back({ab, t.b, bc, t.depth + 1});
+        stack.push_back({ca, bc, t.c, t.depth + 1});
+        stack.push_back({ab, bc, ca, t.depth + 1});
+        continue;
+      }
+      n += area * 2.0 / (std::sqrt(3.0) * h * h);
+    }
   }
   for (auto eh : mesh.edges()) {
     if (!mesh.is_boundary(eh)) continue;
@@ -253,7 +272,20 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) {
   if (params.size < 0 || !std::isfinite(params.size)) throw InvalidInput("size field: --size must be positive");
   if (params.size > 0) return SizeField::uniform(params.size);
-  if (params.target_vertices > 0) return SizeField::uniform(size_for_vertex_count(measure_domain(input_cdt), params.target_vertices));
+  if (params.target_vertices > 0) {
+    const double h = size_for_vertex_count(measure_domain(input_cdt), params.target_vertices);
+    if (!params.graded) return SizeField::uniform(h);
+    SizeFieldParams p = params;
+    p.hmax = h;
+    SizeField f = local_feature_size_field(input_cdt, p);
+    const double target = static_cast<double>(params.target_vertices);
+    for (int k = 0; k < 8; ++k) {
+      const double ratio = predicted_vertex_count(input_cdt, f) / target;
+      if (std::abs(ratio - 1.0) < 0.01) break;
+      f.scale(std::sqrt(ratio));
+    }
+    return f;
+  }
   return local_feature_size_field(input_cdt, params);
 }
 

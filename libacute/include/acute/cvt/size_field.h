@@ -57,7 +57,8 @@ class SizeField {
 
 struct SizeFieldParams {
   double size = 0;                ///< > 0: uniform field of this edge length
-  std::size_t target_vertices = 0;  ///< > 0 (and size == 0): uniform field giving about this many vertices
+  std::size_t target_vertices = 0;  ///< > 0 (and size == 0): field giving about this many vertices
+  bool graded = false;            ///< with target_vertices: the graded field scaled to the count (else uniform)
   double gradation = 1.3;         ///< graded field: |grad h| <= gradation - 1
   double lfs_factor = 1.0;        ///< graded field: h = lfs_factor * local feature size at input points
   double hmin = 0;                ///< graded field clamp; 0: 1e-6 * diameter
@@ -77,7 +78,8 @@ DomainMeasures measure_domain(const Mesh& mesh);
 double size_for_vertex_count(const DomainMeasures& measures, std::size_t n);
 
 /// Predicted vertex count of a CVT with field h: integral of 2/(sqrt(3) h^2) over the mesh
-/// (centroid rule per face) + boundary length / (2 h) along mesh boundary edges + 1.
+/// (faces cut into four until they are small against h, centroid rule) + boundary length / (2 h)
+/// along mesh boundary edges + 1.
 double predicted_vertex_count(const Mesh& mesh, const SizeField& field);
 
 /// The graded field of the input: h = lfs_factor * lfs at every input point (distance to the
@@ -87,7 +89,9 @@ double predicted_vertex_count(const Mesh& mesh, const SizeField& field);
 /// edges of the Delaunay triangulation of those points (Dijkstra), which is the background mesh.
 SizeField local_feature_size_field(const Mesh& input_cdt, const SizeFieldParams& params);
 
-/// Chooses the field from params: uniform(size), uniform for target_vertices, else graded.
+/// Chooses the field from params: uniform(size); for target_vertices uniform, or (graded) the graded
+/// field with hmax = the uniform size, scaled until the predicted count is within 1% of the target;
+/// else the graded field.
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params);
 
 }  // namespace acute
