@@ -116,6 +116,11 @@ VertexHandle insert_point(Mesh& mesh, const Point2& p, FaceHandle start, EdgeHan
       return restore_around(mesh, vh);
     }
     case LocationKind::OnEdge: {
+      // An unconstrained boundary edge is a frozen border (e.g. of a region copy): never split it.
+      if (mesh.is_boundary(loc.edge) && !is_constrained(mesh, loc.edge)) {
+        if (blocked_edge) *blocked_edge = loc.edge;
+        return VertexHandle();
+      }
       const VertexHandle vh = mesh.add_vertex(Mesh::Point(p.x(), p.y(), 0.0));
       split_with_vertex(mesh, loc.edge, vh);
       return restore_around(mesh, vh);

@@ -4,6 +4,7 @@
 #include <acute/mesh/segments.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace acute::detail {
 
@@ -111,6 +112,44 @@ std::vector<VertexHandle> commit_region(Mesh& big, const Region& region, const M
     if (bh.is_valid()) big.data(big.edge_handle(bh)) = sub.data(eh);
   }
   return created;
+}
+
+}  // namespace acute::detail
+
+namespace acute::detail {
+
+std::string constraint_violation(const Mesh& mesh) {
+  const auto& table = segment_table(mesh);
+  auto off_line = [&](const Point2& p, int seg) {
+    if (seg < 0 || static_cast<std::size_t>(seg) >= table.size()) return false;
+    const auto& [a, b] = table[static_cast<std::size_t>(seg)];
+    const Point2 d = b - a;
+    const double cross = d.x() * (p - a).y() - d.y() * (p - a).x();
+    const double t = (p - a).dot(d) / d.squaredNorm();
+    return std::abs(cross) / d.norm() > 1e-9 * d.norm() || t < -1e-9 || t > 1 + 1e-9;
+  };
+  for (auto fh : mesh.faces()) {
+    Point2 p[3];
+    int k = 0;
+    for (auto vh : mesh.fv_range(fh)) p[k++] = point2(mesh, vh);
+    if ((p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x() <= 0)
+      return "face " + std::to_string(fh.idx()) + " not counter-clockwise";
+  }
+  for (auto eh : mesh.edges()) {
+    const int seg = mesh.data(eh).segment;
+    if (seg < 0) {
+      if (mesh.is_boundary(eh)) return "edge " + std::to_string(eh.idx()) + " on the boundary but unconstrained";
+      continue;
+    }
+    const auto h = mesh.halfedge_handle(eh, 0);
+    for (auto vh : {mesh.from_vertex_handle(h), mesh.to_vertex_handle(h)})
+      if (off_line(point2(mesh, vh), seg))
+        return "edge " + std::to_string(eh.idx()) + " of segment " + std::to_string(seg) + ": vertex " + std::to_string(vh.idx()) + " off the segment";
+  }
+  for (auto vh : mesh.vertices())
+    if (mesh.data(vh).kind == VertexKind::OnSegment && off_line(point2(mesh, vh), mesh.data(vh).segment))
+      return "vertex " + std::to_string(vh.idx()) + " off its segment " + std::to_string(mesh.data(vh).segment);
+  return {};
 }
 
 }  // namespace acute::detail

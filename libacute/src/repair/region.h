@@ -8,6 +8,7 @@
 
 #include <acute/mesh/mesh.h>
 
+#include <string>
 #include <vector>
 
 namespace acute::detail {
@@ -28,4 +29,10 @@ bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const st
 /// whose frozen vertices are unchanged). Returns the big-mesh handles of sub's non-frozen vertices.
 std::vector<VertexHandle> commit_region(Mesh& big, const Region& region, const Mesh& sub);
 
+}  // namespace acute::detail
+
+namespace acute::detail {
+/// Paranoid check used by tests and ACUTE_PARANOID runs: every face counter-clockwise, every
+/// constrained edge and OnSegment vertex on its input segment's line (1e-9 relative). Empty when fine.
+std::string constraint_violation(const Mesh& mesh);
 }  // namespace acute::detail

@@ -10,7 +10,10 @@
 
 #include "repair/region.h"
 
+#include <acute/core/errors.h>
+
 #include <algorithm>
+#include <cstdlib>
 #include <chrono>
 #include <cmath>
 
@@ -33,6 +36,10 @@ class Repairer {
   RepairResult run() {
     const auto t0 = std::chrono::steady_clock::now();
     refresh_forced();
+    if (paranoid_) {
+      const std::string problem = detail::constraint_violation(mesh_);
+      if (!problem.empty()) throw InternalError("repair: input mesh: " + problem);
+    }
     std::size_t best_bad = SIZE_MAX;
     Mesh best;
     int stagnation = 0;
@@ -158,6 +165,11 @@ class Repairer {
       try_candidates(region, best, best_score);
       if (best_score < base) {
         detail::commit_region(mesh_, region, best);
+        if (paranoid_) {
+          const std::string sub_problem = detail::constraint_violation(best);
+          const std::string problem = detail::constraint_violation(mesh_);
+          if (!problem.empty()) throw InternalError("repair: after a cluster edit: " + problem + " (region copy: " + sub_problem + ")");
+        }
         forced_.resize(mesh_.n_vertices(), false);
         ++result_.committed;
       }
@@ -211,9 +223,17 @@ class Repairer {
   void try_candidates(const detail::Region& region, Mesh& best, Score& best_score) {
     const Mesh& sub0 = region.sub;
     const auto& forced = region.forced;
+    candidate_ = 0;
     auto attempt = [&](auto&& operation) {
+      ++candidate_;
       Mesh sub = sub0;
       if (!operation(sub)) return;  // (no garbage collection: sub vertex indices map to the big mesh)
+      if (paranoid_) {
+        auto boundary_edges = [](const Mesh& m) { std::size_t n = 0; for (auto eh : m.edges()) n += m.is_boundary(eh) && !is_constrained(m, eh); return n; };
+        if (boundary_edges(sub) != boundary_edges(sub0))
+          throw InternalError("repair: candidate " + std::to_string(candidate_) + " changed the region boundary: " +
+                              std::to_string(boundary_edges(sub0)) + " -> " + std::to_string(boundary_edges(sub)) + " edges");
+      }
       smooth_sub(sub, forced, 3);
       const Score s = score(sub, forced);
       if (s < best_score) {
@@ -254,6 +274,20 @@ class Repairer {
         return vh.is_valid() && !is_input(sub, vh);
       });
 
+    // Compound: split every splittable edge of the worst face at its midpoint (local refinement for
+    // clusters that no single insertion improves, e.g. right triangles between input points).
+    attempt([&](Mesh& sub) {
+      int splits = 0;
+      for (int k = 0; k < 3; ++k) {
+        const auto heh = sub.find_halfedge(v[k], v[(k + 1) % 3]);
+        if (!heh.is_valid()) continue;
+        const EdgeHandle eh = sub.edge_handle(heh);
+        if (sub.is_boundary(eh) && !is_constrained(sub, eh)) continue;
+        splits += split_edge(sub, eh, 0.5 * (p[k] + p[(k + 1) % 3])).is_valid();
+      }
+      return splits > 0;
+    });
+
     // Removals: collapse the edge opposite the smallest angle, or remove a corner of the worst face.
     const VertexHandle vb2 = v[(kmin + 1) % 3], vc2 = v[(kmin + 2) % 3];
     for (auto [from, to] : {std::pair{vb2, vc2}, std::pair{vc2, vb2}})
@@ -276,6 +310,8 @@ class Repairer {
   AngleBounds bounds_;
   std::vector<bool> forced_;
   std::vector<EdgeHandle> queue_;
+  int candidate_ = 0;
+  bool paranoid_ = std::getenv("ACUTE_PARANOID") != nullptr;
   RepairResult result_;
 };
 

@@ -29,7 +29,8 @@ Location locate(const Mesh& mesh, const Point2& p, FaceHandle start);
 /// Inserts p where `locate` finds it and restores the constrained Delaunay property around it.
 /// On a constrained edge the new vertex is VertexKind::OnSegment (the edge halves keep the
 /// segment id). Returns the new vertex (or the existing one when p is a vertex); an invalid
-/// handle when blocked (then `blocked_edge` is set if given).
+/// handle when blocked (then `blocked_edge` is set if given) or when p falls on an unconstrained
+/// boundary edge (a frozen border, e.g. of a region copy), which is never split.
 VertexHandle insert_point(Mesh& mesh, const Point2& p, FaceHandle start, EdgeHandle* blocked_edge = nullptr);
 
 /// Splits edge eh at p (which should lie on it, e.g. a midpoint rounded to doubles) and restores
