@@ -279,7 +279,7 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
     }
     bool accepted = false;
     double step = 1.0;
-    for (int ls = 0; ls < 10; ++ls, step *= 0.5) {
+    for (int ls = 0; ls < 5; ++ls, step *= 0.5) {
       target = x0 + step * s.cwiseProduct(dz);
       opt.apply(target);
       opt.evaluate();
