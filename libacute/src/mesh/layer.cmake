@@ -5,4 +5,5 @@ acute_add_layer(mesh
     src/mesh/check.cpp
     src/mesh/segments.cpp
     src/mesh/geometry.cpp
+    src/mesh/dual.cpp
   DEPENDS acute_predicates acute_openmesh)
