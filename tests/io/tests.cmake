@@ -6,3 +6,7 @@ acute_add_test(io_tests
     io/write_test.cpp
     io/corpus_test.cpp
   LIBS acute_io)
+acute_add_test(io_formats_tests
+  SOURCES
+    io/formats_test.cpp
+  LIBS acute_io)

@@ -8,5 +8,9 @@ acute_add_layer(io
     src/io/mesh_io.cpp
     src/io/read_ply.cpp
     src/io/write_svg.cpp
+    src/io/write_vtk.cpp
+    src/io/write_msh.cpp
+    src/io/write_ply.cpp
+    src/io/write_dual.cpp
   DEPENDS acute_mesh)
 target_link_libraries(acute_io PRIVATE nlohmann_json::nlohmann_json)

@@ -385,7 +385,12 @@ void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& o
   if (ext == ".obj") return write_obj(mesh, path);
   if (ext == ".node" || ext == ".ele") return write_node_ele(mesh, path);
   if (ext == ".svg") return write_svg(mesh, path, options);
-  throw IoError(path + ": unknown output format '" + ext + "' (expected .off, .obj, .node, .ele, .svg)");
+  if (ext == ".ply") return write_ply(mesh, path);
+  if (ext == ".vtk") return write_vtk(mesh, path);
+  if (ext == ".vtu") return write_vtu(mesh, path);
+  if (ext == ".msh") return write_msh(mesh, path);
+  throw IoError(path + ": unknown output format '" + ext +
+                "' (expected .off, .obj, .ply, .vtk, .vtu, .msh, .node, .ele, .svg)");
 }
 
 }  // namespace acute::io

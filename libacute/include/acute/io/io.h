@@ -3,6 +3,7 @@
 #pragma once
 
 #include <acute/core/domain.h>
+#include <acute/mesh/dual.h>
 #include <acute/mesh/mesh.h>
 
 #include <functional>
@@ -65,12 +66,38 @@ struct WriteOptions {
   std::string title;            ///< SVG legend title
 };
 
-/// Writes by extension: .off .obj (17 significant digits), .node/.ele (give either; both written),
-/// .svg. Written atomically (temporary file + rename). Throws IoError.
+/// Writes by extension: .off .obj .ply .vtk .vtu .msh (17 significant digits), .node/.ele (give
+/// either; both written), .svg. Written atomically (temporary file + rename). Throws IoError.
 void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options = {});
 
 /// SVG picture: triangles, constrained edges bold, bad triangles filled, legend with figures.
 void write_svg(const Mesh& mesh, const std::string& path, const WriteOptions& options = {});
+
+/// Legacy VTK (ASCII UNSTRUCTURED_GRID, version 3.0): POINTS double (z = 0), triangles (cell type
+/// 5), POINT_DATA "marker", CELL_DATA "min_angle" and "max_angle" in degrees. For ParaView/meshio.
+void write_vtk(const Mesh& mesh, const std::string& path);
+
+/// VTK XML UnstructuredGrid (.vtu, ASCII), the same data as write_vtk.
+void write_vtu(const Mesh& mesh, const std::string& path);
+
+/// Gmsh 4.1 ASCII (.msh): one surface entity holding every node and one block of 3-node
+/// triangles (type 2); tags are 1-based in vertex / face order. Angles in an $ElementData view.
+void write_msh(const Mesh& mesh, const std::string& path);
+
+/// ASCII PLY: vertex x y z as double (+ int marker), face vertex_indices (uchar count, int
+/// indices) + double min_angle, max_angle.
+void write_ply(const Mesh& mesh, const std::string& path);
+
+/// Writes the circumcentric dual (acute::circumcentric_dual) by extension: .off .obj .ply .vtk
+/// .vtu (polygons; the VTK files carry cell data "primal_vertex", "boundary", "area" and point
+/// data "kind", the PLY file no per-cell data) or .svg (the cells over the primal mesh when
+/// given, cells with non-positive area filled). Atomic. Throws IoError for other extensions.
+void write_dual(const DualMesh& dual, const std::string& path, const Mesh* primal = nullptr,
+                const WriteOptions& options = {});
+
+/// Is this extension one write_mesh / write_dual accept?
+bool is_mesh_output_path(const std::string& path);
+bool is_dual_output_path(const std::string& path);
 
 /// Is this extension a mesh format we can read (.off .obj .ply .node .ele)?
 bool is_mesh_path(const std::string& path);
