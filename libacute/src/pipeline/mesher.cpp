@@ -1,6 +1,7 @@
 #include <acute/mesher.h>
 
 #include <acute/core/errors.h>
+#include <acute/cvt/cvt.h>
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/segments.h>
 #include <acute/refine/refine.h>
@@ -89,15 +90,20 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       break;
     }
     case Method::Cvt:
-      throw InvalidInput(std::string("method '") + to_string(options.method) + "' is not available yet");
     case Method::Acute: {
-      // Until the CVT start lands: a Delaunay refinement start at the target size, then the repair.
-      notify("refine");
-      RefineParams rp;
-      rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
-      rp.max_edge = target_edge(options, mesh_area(result.mesh));
-      rp.max_vertices = options.max_vertices;
-      refine(result.mesh, rp);
+      notify("cvt");
+      CvtParams cp;
+      cp.size = options.size;
+      cp.target_vertices = options.target_vertices;
+      cp.graded = options.size <= 0;
+      cp.gradation = options.gradation;
+      cp.seed = options.seed;
+      if (options.observer)
+        cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy}); };
+      CvtResult cvt = cvt_mesh(domain, cp);
+      result.mesh = std::move(cvt.mesh);
+      result.iterations = cvt.iterations;
+      if (options.method == Method::Cvt) break;
       notify("repair");
       RepairParams params;
       params.bounds.min_deg = options.min_angle_deg;
@@ -108,7 +114,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       if (options.observer)
         params.observer = [&](const RepairProgress& p) { options.observer(MeshProgress{"repair", p.iteration, p.bad, 0}); };
       const RepairResult r = repair_acute(result.mesh, params);
-      result.iterations = r.iterations;
+      result.iterations += r.iterations;
       result.status = r.status == RepairStatus::Converged ? MeshStatus::Ok : MeshStatus::BoundsNotMet;
       for (auto fh : bad_triangles(result.mesh, params.bounds)) {
         if (result.remaining.size() >= 100) break;
