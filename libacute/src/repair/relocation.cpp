@@ -30,6 +30,25 @@ double star_margin(const Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   return margin;
 }
 
+double star_energy(const Mesh& mesh, VertexHandle vh, const AngleBounds& bounds, const std::vector<bool>& forced) {
+  // Soft minimum of the angle margins: every angle near or beyond a bound pushes, the worst most.
+  // (A plain max-min stalls when the worst angle cannot change, e.g. at a fixed input corner.)
+  constexpr double kTau = 2.0;  // degrees
+  double energy = 0;
+  for (auto heh : mesh.voh_range(vh)) {
+    if (mesh.is_boundary(heh)) continue;
+    const bool exempt = face_exempt(mesh, heh, forced);
+    const Point2 a = point2(mesh, vh), b = point2(mesh, mesh.to_vertex_handle(heh));
+    const Point2 c = point2(mesh, mesh.to_vertex_handle(mesh.next_halfedge_handle(heh)));
+    for (double angle : angles_deg(a, b, c)) {
+      double m = bounds.max_deg - angle;
+      if (!exempt) m = std::min(m, angle - bounds.min_deg);
+      energy += std::exp(-m / kTau);
+    }
+  }
+  return energy;
+}
+
 bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds, const std::vector<bool>& forced) {
   const auto& data = mesh.data(vh);
   if (data.kind == VertexKind::Input) return false;
@@ -57,7 +76,7 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   }
   auto place = [&](const Point2& p) { return on_segment ? project_on_segment(mesh, data.segment, p) : p; };
 
-  const double base = star_margin(mesh, vh, bounds, forced);
+  const double base = star_energy(mesh, vh, bounds, forced);
   double best = base;
   Point2 best_p = start;
   // Evaluates a candidate (exactly valid stars only) and keeps it when better.
@@ -65,9 +84,9 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
     const Point2 p = place(q);
     if (p == best_p || can_relocate(mesh, vh, p) != OpVerdict::Ok) return false;
     set_point2(mesh, vh, p);
-    const double m = star_margin(mesh, vh, bounds, forced);
+    const double m = star_energy(mesh, vh, bounds, forced);
     set_point2(mesh, vh, best_p);
-    if (m > best + 1e-12) {
+    if (m < best * (1 - 1e-12)) {
       best = m;
       best_p = p;
       set_point2(mesh, vh, p);

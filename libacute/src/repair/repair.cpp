@@ -13,6 +13,7 @@
 #include <acute/core/errors.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <chrono>
 #include <cmath>
@@ -160,6 +161,11 @@ class Repairer {
       detail::Region region;
       if (!detail::extract_region(mesh_, movable, forced_, region)) continue;
       const Score base = score(region.sub, region.forced);
+      if (trace_) {
+        const auto p = face_points(mesh_, c.bad[0]);
+        std::fprintf(stderr, "it %d cluster at (%.6g, %.6g): %zu bad, region %zu faces, base bad %zu worst %.4f\n", it, p[0].x(),
+                     p[0].y(), c.bad.size(), region.big_faces.size(), base.bad, base.worst);
+      }
       Mesh best;
       Score best_score = base;
       try_candidates(region, best, best_score);
@@ -176,11 +182,17 @@ class Repairer {
     }
   }
 
-  /// Lexicographic: fewer bad triangles, then a larger worst margin.
+  /// Lexicographic: fewer bad triangles, then fewer pinned ones (that no relocation can fix), then
+  /// a larger worst margin.
   struct Score {
     std::size_t bad = 0;
+    std::size_t pinned = 0;
     double worst = INFINITY;
-    bool operator<(const Score& o) const { return bad != o.bad ? bad < o.bad : worst > o.worst + 1e-9; }
+    bool operator<(const Score& o) const {
+      if (bad != o.bad) return bad < o.bad;
+      if (pinned != o.pinned) return pinned < o.pinned;
+      return worst > o.worst + 1e-9;
+    }
   };
 
   Score score(const Mesh& sub, const std::vector<bool>& forced) const {
@@ -188,9 +200,27 @@ class Repairer {
     for (auto fh : sub.faces()) {
       const double m = triangle_margin(sub, fh, bounds_, face_is_exempt(sub, fh, forced));
       s.worst = std::min(s.worst, m);
-      s.bad += m < bounds_.margin_deg;
+      if (m < bounds_.margin_deg) {
+        ++s.bad;
+        s.pinned += has_pinned_bad_angle(sub, fh);
+      }
     }
     return s;
+  }
+
+  /// A bad angle at an input vertex between two constrained edges is the input corner itself: only a
+  /// new vertex connected to the corner changes it.
+  bool has_pinned_bad_angle(const Mesh& sub, FaceHandle fh) const {
+    for (auto heh : sub.fh_range(fh)) {
+      const HalfedgeHandle next = sub.next_halfedge_handle(heh);  // heh ends at the apex, next leaves it
+      const VertexHandle apex = sub.to_vertex_handle(heh);
+      if (sub.data(apex).kind != VertexKind::Input || sub.data(apex).input_index < 0) continue;
+      if (!is_constrained(sub, sub.edge_handle(heh)) || !is_constrained(sub, sub.edge_handle(next))) continue;
+      const Point2 a = point2(sub, apex);
+      const double angle = angles_deg(a, point2(sub, sub.to_vertex_handle(next)), point2(sub, sub.from_vertex_handle(heh)))[0];
+      if (angle >= bounds_.max_deg - bounds_.margin_deg) return true;
+    }
+    return false;
   }
 
   static bool face_is_exempt(const Mesh& mesh, FaceHandle fh, const std::vector<bool>& forced) {
@@ -236,6 +266,7 @@ class Repairer {
       }
       smooth_sub(sub, forced, 3);
       const Score s = score(sub, forced);
+      if (trace_) std::fprintf(stderr, "    candidate %d: bad %zu worst %.4f\n", candidate_, s.bad, s.worst);
       if (s < best_score) {
         best_score = s;
         best = std::move(sub);
@@ -268,7 +299,11 @@ class Repairer {
         if (sub.is_boundary(eh) && !is_constrained(sub, eh)) return false;  // frozen ring edge
         return split_edge(sub, eh, ea + t * (eb - ea)).is_valid();
       });
-    for (const Point2& q : {circumcenter(p[0], p[1], p[2]), Point2((p[0] + p[1] + p[2]) / 3.0)})
+    // The point on the bisector of the large angle at the distance of its two edges: gives the corner
+    // a second triangle (e.g. a 90-degree input corner covered by one right triangle).
+    const Point2 bisector = ((ea - ec).normalized() + (eb - ec).normalized()).normalized();
+    const Point2 on_bisector = ec + 0.5 * ((ea - ec).norm() + (eb - ec).norm()) * bisector;
+    for (const Point2& q : {circumcenter(p[0], p[1], p[2]), Point2((p[0] + p[1] + p[2]) / 3.0), on_bisector})
       attempt([&, q](Mesh& sub) {
         const VertexHandle vh = insert_point(sub, q, worst_face);
         return vh.is_valid() && !is_input(sub, vh);
@@ -311,6 +346,7 @@ class Repairer {
   std::vector<bool> forced_;
   std::vector<EdgeHandle> queue_;
   int candidate_ = 0;
+  bool trace_ = std::getenv("ACUTE_TRACE") != nullptr;
   bool paranoid_ = std::getenv("ACUTE_PARANOID") != nullptr;
   RepairResult result_;
 };
