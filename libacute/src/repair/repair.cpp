@@ -309,6 +309,24 @@ class Repairer {
         return vh.is_valid() && !is_input(sub, vh);
       });
 
+    // Raise the degree of the vertex with the large angle: split each edge of its link (a boundary
+    // vertex with two triangles, or an interior one with four, always has an angle of 90 or more).
+    const VertexHandle vmax = v[kmax];
+    std::vector<std::array<VertexHandle, 2>> link;
+    for (auto heh : sub0.voh_range(vmax))
+      if (!sub0.is_boundary(heh)) {
+        const auto l = sub0.next_halfedge_handle(heh);
+        link.push_back({sub0.from_vertex_handle(l), sub0.to_vertex_handle(l)});
+      }
+    for (const auto& ends : link)
+      attempt([&, ends](Mesh& sub) {
+        const auto heh = sub.find_halfedge(ends[0], ends[1]);
+        if (!heh.is_valid()) return false;
+        const EdgeHandle eh = sub.edge_handle(heh);
+        if (sub.is_boundary(eh) && !is_constrained(sub, eh)) return false;
+        return split_edge(sub, eh, 0.5 * (point2(sub, ends[0]) + point2(sub, ends[1]))).is_valid();
+      });
+
     // Compound: split every splittable edge of the worst face at its midpoint (local refinement for
     // clusters that no single insertion improves, e.g. right triangles between input points).
     attempt([&](Mesh& sub) {
