@@ -3,6 +3,7 @@
 
 #include <acute/core/errors.h>
 #include <acute/io/io.h>
+#include <acute/mesh/dual.h>
 #include <acute/mesh/quality.h>
 #include <acute/mesher.h>
 
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <unistd.h>
 
 namespace acute::cli {
@@ -20,7 +22,7 @@ namespace acute::cli {
 namespace {
 
 struct MeshArgs {
-  std::string input, output, method = "acute", json_path;
+  std::string input, output, method = "acute", dual;
   MeshOptions options;
   bool convex_hull = false, split_crossings = false, json = false;
 };
@@ -33,6 +35,9 @@ bool same_file(const std::string& a, const std::string& b) {
 int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
   const auto t0 = std::chrono::steady_clock::now();
   if (same_file(args.input, args.output)) throw IoError(args.output + ": refusing to overwrite the input file");
+  if (!io::is_mesh_output_path(args.output)) throw InvalidInput(args.output + ": unknown output format (use .off .obj .ply .node .ele .vtk .vtu .msh .svg)");
+  if (!args.dual.empty() && !io::is_dual_output_path(args.dual))
+    throw InvalidInput(args.dual + ": unknown dual format (use .off .obj .ply .vtk .vtu .svg)");
   io::WarningSink warn = [&](const std::string& w) {
     if (!global.quiet) std::cerr << "acute: warning: " << w << "\n";
   };
@@ -61,6 +66,14 @@ int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
   write_options.max_angle_deg = options.max_angle_deg;
   write_options.title = domain.name;
   io::write_mesh(result.mesh, args.output, write_options);
+  std::optional<DualCheck> dual_check;
+  if (!args.dual.empty()) {
+    dual_check = check_well_centered(result.mesh);
+    io::write_dual(circumcentric_dual(result.mesh), args.dual, &result.mesh, write_options);
+    if (!dual_check->well_centered() && !global.quiet)
+      std::cerr << "acute: the dual is not well-centred: " << dual_check->n_right << " right and " << dual_check->n_obtuse
+                << " obtuse triangles\n";
+  }
 
   QualityOptions qopt;
   qopt.min_angle_deg = options.min_angle_deg;
@@ -95,6 +108,8 @@ int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
     j["iterations"] = result.iterations;
     j["seconds"] = seconds;
     j["merged_duplicates"] = result.cdt.merged_duplicates;
+    if (dual_check)
+      j["dual"] = {{"well_centered", dual_check->well_centered()}, {"n_right", dual_check->n_right}, {"n_obtuse", dual_check->n_obtuse}};
     std::cout << j.dump(2) << "\n";
   } else if (!global.quiet) {
     std::printf("%s: %zu vertices, %zu triangles, angles %.4f..%.4f deg, %zu obtuse, %zu below %.4g, %d iterations, %.3f s -> %s\n",
@@ -127,6 +142,7 @@ void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code
   cmd->add_option("--max-iterations", args->options.max_iterations, "Iteration cap (0: method default)");
   cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();
   cmd->add_option("--time-limit", args->options.time_limit_s, "Time limit in seconds (0: none)");
+  cmd->add_option("--dual", args->dual, "Also write the circumcentric dual (.off .obj .ply .vtk .vtu .svg)");
   cmd->add_flag("--convex-hull", args->convex_hull, "Mesh the convex hull of the points (Triangle -c)");
   cmd->add_flag("--split-crossings", args->split_crossings, "Split crossing segments instead of failing");
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
