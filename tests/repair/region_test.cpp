@@ -1,0 +1,69 @@
+#include <acute/mesher.h>
+#include <acute/ops/insert.h>
+#include <acute/repair/angle_bounds.h>
+
+#include "repair/region.h"
+#include "support/mesh_verify.h"
+
+namespace acute {
+namespace {
+
+Domain square_with_hole() {
+  Domain d;
+  d.points = {Point2(0, 0), Point2(4, 0), Point2(4, 4), Point2(0, 4), Point2(1.5, 1.5), Point2(2.5, 1.5), Point2(2.5, 2.5), Point2(1.5, 2.5)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
+  d.holes = {Point2(2, 2)};
+  return d;
+}
+
+TEST(Region, unchanged_copy_written_back_leaves_an_equivalent_mesh) {
+  MeshOptions options;
+  options.method = Method::Cvt;
+  options.target_vertices = 300;
+  Mesh mesh = generate_mesh(square_with_hole(), options).mesh;
+  const double area = test::total_area(mesh);
+  const std::size_t faces = mesh.n_faces();
+  const auto forced = forced_corner_vertices(mesh, 30);
+  std::vector<VertexHandle> movable;
+  for (auto vh : mesh.vertices())
+    if (movable.size() < 12 && (vh.idx() % 7) == 0) movable.push_back(vh);
+  detail::Region region;
+  ASSERT_TRUE(detail::extract_region(mesh, movable, forced, region));
+  detail::commit_region(mesh, region, region.sub);
+  mesh.garbage_collection();
+  EXPECT_MESH_VALID(mesh);
+  EXPECT_EQ(detail::constraint_violation(mesh), "");
+  EXPECT_EQ(mesh.n_faces(), faces);
+  EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
+}
+
+TEST(Region, edits_in_the_copy_never_touch_the_frozen_border) {
+  MeshOptions options;
+  options.method = Method::Cvt;
+  options.target_vertices = 300;
+  Mesh mesh = generate_mesh(square_with_hole(), options).mesh;
+  const double area = test::total_area(mesh);
+  const auto forced = forced_corner_vertices(mesh, 30);
+  std::vector<VertexHandle> movable;
+  for (auto vh : mesh.vertices())
+    if (!is_input(mesh, vh) && movable.size() < 5) movable.push_back(vh);
+  detail::Region region;
+  ASSERT_TRUE(detail::extract_region(mesh, movable, forced, region));
+  Mesh sub = region.sub;
+  // Insert at every face centroid of the copy: points on the frozen border would be refused.
+  std::vector<FaceHandle> faces(sub.faces().begin(), sub.faces().end());
+  for (auto fh : faces) {
+    if (sub.status(fh).deleted()) continue;
+    Point2 c(0, 0);
+    for (auto vh : sub.fv_range(fh)) c += point2(sub, vh) / 3.0;
+    insert_point(sub, c, fh);
+  }
+  detail::commit_region(mesh, region, sub);
+  mesh.garbage_collection();
+  EXPECT_MESH_VALID(mesh);
+  EXPECT_EQ(detail::constraint_violation(mesh), "");
+  EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
+}
+
+}  // namespace
+}  // namespace acute
