@@ -1,0 +1,70 @@
+// libFuzzer target: build_cdt on a small PSLG decoded from the bytes, verified independently.
+// Layout: flags, point count, points (2 bytes each), segment count, segments (2 bytes each),
+// hole count, holes (2 bytes each). Missing bytes read as 0.
+//   flags bit 0: convex hull (Triangle -c)      bit 1: split crossing segments
+//   flags bits 2-3: grid size 4 / 16 / 64 / 256 bits 4-6: scale and offset (powers of two, exact)
+#include "fuzz_common.h"
+
+#include <acute/delaunay/cdt.h>
+#include <acute/io/io.h>
+
+namespace {
+
+struct Reader {
+  const std::uint8_t* data;
+  std::size_t size;
+  std::size_t pos = 0;
+  std::uint8_t next() { return pos < size ? data[pos++] : 0; }
+};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace acute_fuzz;
+  Reader in{data, size};
+  const std::uint8_t flags = in.next();
+  const int grid = 4 << (2 * ((flags >> 2) & 3));
+  // Scales/offsets keep integer-grid geometry exact in doubles.
+  static const double scales[8] = {1, 1, 0x1p-30, 0x1p30, 0x1p-60, 0x1p60, 1, 0x1p-20};
+  static const double offsets[8] = {0, -8, 0, 0, 0, 0, 0x1p40, 0x1p-10};
+  const int mode = (flags >> 4) & 7;
+  const double scale = scales[mode], offset = offsets[mode];
+  auto coord = [&](std::uint8_t b) { return offset + scale * static_cast<double>(b % grid); };
+
+  Domain d;
+  d.name = "fuzz_cdt";
+  d.convex_hull = flags & 1;
+  const int n = 3 + in.next() % 18;
+  for (int i = 0; i < n; ++i) {
+    const double x = coord(in.next()), y = coord(in.next());
+    d.points.emplace_back(x, y);
+    d.point_markers.push_back(0);
+  }
+  const int m = in.next() % 24;
+  for (int i = 0; i < m; ++i) {
+    const int a = in.next() % n, b = in.next() % n;
+    if (a == b) continue;
+    d.segments.push_back({a, b});
+    d.segment_markers.push_back(1);
+  }
+  const int h = in.next() % 3;
+  for (int i = 0; i < h; ++i) {
+    const std::uint8_t x = in.next(), y = in.next();
+    d.holes.emplace_back(offset + scale * (x % grid + 0.5), offset + scale * (y % grid + 0.5));
+  }
+
+  acute::CdtOptions options;
+  options.crossing = (flags & 2) ? acute::CrossingSegments::Split : acute::CrossingSegments::Error;
+  Mesh mesh;
+  acute::CdtStats stats;
+  if (!run_guarded("build_cdt", [&] { mesh = acute::build_cdt(d, options, &stats); })) return 0;
+  if (const char* dump = std::getenv("ACUTE_FUZZ_DUMP")) acute::io::write_mesh(mesh, dump);  // for debugging
+  CdtCheckOptions check;
+  check.convex_hull = d.convex_hull;
+  check.exact_area = !(flags & 2);
+  const std::string problem = verify_cdt(mesh, d, check);
+  // ACUTE_FUZZ_ONLY=text: only findings containing text count (for -minimize_crash on one bug).
+  const char* only = std::getenv("ACUTE_FUZZ_ONLY");
+  if (!problem.empty() && (!only || problem.find(only) != std::string::npos)) fail("build_cdt: " + problem);
+  return 0;
+}
