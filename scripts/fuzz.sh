@@ -2,6 +2,7 @@
 # Builds the libFuzzer targets (clang, ASan+UBSan) in ./build-fuzz and runs one for a given time.
 # Usage: scripts/fuzz.sh TARGET SECONDS [libFuzzer args...]
 #   TARGET: fuzz_poly | fuzz_cgshop | fuzz_mesh_reader | fuzz_cdt | build (only build all)
+#           | regress (replay tests/fuzz/regressions/TARGET-*: exit 1 if any still fails)
 # The seed corpus tests/fuzz/corpus/TARGET is copied into build-fuzz/corpus/TARGET, which grows
 # between runs; crashes, timeouts and leaks go to build-fuzz/artifacts/TARGET/.
 # Reproduce a crash: build-fuzz/bin/TARGET FILE.   Needs clang++ and libclang-rt-14-dev.
@@ -22,6 +23,16 @@ fi
 if [ "$target" = build ]; then
   cmake --build "$dir" -j"$jobs"
   exit 0
+fi
+if [ "$target" = regress ]; then
+  # Replays tests/fuzz/regressions/<target>-<what> with its target: lists the ones still failing.
+  cmake --build "$dir" -j"$jobs" >/dev/null
+  bad=0
+  for f in tests/fuzz/regressions/*; do
+    t=$(basename "$f"); t=${t%%-*}
+    if "$dir/bin/$t" "$f" >/dev/null 2>&1; then echo "fixed   $(basename "$f")"; else echo "FAILING $(basename "$f")"; bad=$((bad + 1)); fi
+  done
+  exit $(( bad > 0 ))
 fi
 cmake --build "$dir" -j"$jobs" --target "$target"
 
