@@ -77,6 +77,8 @@ class Refiner {
       if (result_.status == RefineStatus::BudgetExhausted || progress() == before) break;
     }
     release_chords();
+    result_.corners = corners_.size();
+    result_.shrinks = shrinks_;
     mesh_.garbage_collection();
     return result_;
   }

@@ -1,8 +1,11 @@
 // Layer: refine. Delaunay refinement (Ruppert / Chew style) on a constrained Delaunay mesh:
 // encroached subsegments are split first, then skinny or large triangles get an off-centre
 // (or circumcentre); points that would encroach a subsegment are not inserted, the subsegment is
-// split instead. Near input corners below 60 degrees subsegments are split on concentric shells
-// around the corner and the triangles there are left alone, which makes the process terminate.
+// split instead. Input corners narrower than 60 degrees are lopped first: their segments are cut
+// at one radius r and the cut points joined by temporary chord constraints, so the fan triangles
+// at the corner are never split and the rest sees only angles >= 90 at the chord ends (corners
+// shrink to r/2 when needed). At a corner narrower than min_angle_deg (a forced corner) every
+// triangle incident on the corner is excused from the angle test, as meshcheck's free min angle.
 #pragma once
 
 #include <acute/mesh/mesh.h>
@@ -24,12 +27,15 @@ struct RefineResult {
   RefineStatus status = RefineStatus::Converged;
   std::size_t inserted = 0;        ///< Steiner points added in triangles
   std::size_t segment_splits = 0;  ///< subsegment splits
+  std::size_t corners = 0;         ///< input corners lopped (sectors below 60 degrees)
+  std::size_t shrinks = 0;         ///< times a lopped corner was cut again at half its radius
 };
 
 /// Refines a constrained Delaunay mesh in place (garbage-collected at the end).
 /// \pre the mesh is constrained Delaunay with its segment table set (build_cdt does both)
-/// \post constrained Delaunay; every triangle not at a small input corner meets min_angle_deg
-///       unless the budget ran out
+/// \post constrained Delaunay (the chords are released); unless the budget ran out, every
+///       triangle not incident on a forced corner has all angles >= min_angle_deg (up to ~33 in
+///       practice) and, with max_edge > 0, circumradius <= max_edge / sqrt(3) (fan triangles too)
 RefineResult refine(Mesh& mesh, const RefineParams& params = {});
 
 }  // namespace acute
