@@ -59,6 +59,7 @@ class Repairer {
       } else {
         ++stagnation;
       }
+      stuck_ = stagnation;
       if (bad == 0) {
         result_.status = RepairStatus::Converged;
         break;
@@ -168,7 +169,7 @@ class Repairer {
       }
       Mesh best;
       Score best_score = base;
-      try_candidates(region, best, best_score);
+      search(region, stuck_ > 2, best, best_score);
       if (best_score < base) {
         detail::commit_region(mesh_, region, best);
         if (paranoid_) {
@@ -182,15 +183,16 @@ class Repairer {
     }
   }
 
-  /// Lexicographic: fewer bad triangles, then fewer pinned ones (that no relocation can fix), then
-  /// a larger worst margin.
+  /// Lexicographic: fewer infeasible vertices (whose angle sum cannot be shared among their
+  /// triangles within the bounds: no relocation can fix them), then fewer bad triangles, then a
+  /// larger worst margin.
   struct Score {
+    std::size_t infeasible = 0;
     std::size_t bad = 0;
-    std::size_t pinned = 0;
     double worst = INFINITY;
     bool operator<(const Score& o) const {
+      if (infeasible != o.infeasible) return infeasible < o.infeasible;
       if (bad != o.bad) return bad < o.bad;
-      if (pinned != o.pinned) return pinned < o.pinned;
       return worst > o.worst + 1e-9;
     }
   };
@@ -200,27 +202,56 @@ class Repairer {
     for (auto fh : sub.faces()) {
       const double m = triangle_margin(sub, fh, bounds_, face_is_exempt(sub, fh, forced));
       s.worst = std::min(s.worst, m);
-      if (m < bounds_.margin_deg) {
-        ++s.bad;
-        s.pinned += has_pinned_bad_angle(sub, fh);
-      }
+      s.bad += m < bounds_.margin_deg;
     }
+    for (auto vh : sub.vertices())
+      if (!sub.status(vh).deleted() && !on_frozen_border(sub, vh)) s.infeasible += infeasible_sectors(sub, vh);
     return s;
   }
 
-  /// A bad angle at an input vertex between two constrained edges is the input corner itself: only a
-  /// new vertex connected to the corner changes it.
-  bool has_pinned_bad_angle(const Mesh& sub, FaceHandle fh) const {
-    for (auto heh : sub.fh_range(fh)) {
-      const HalfedgeHandle next = sub.next_halfedge_handle(heh);  // heh ends at the apex, next leaves it
-      const VertexHandle apex = sub.to_vertex_handle(heh);
-      if (sub.data(apex).kind != VertexKind::Input || sub.data(apex).input_index < 0) continue;
-      if (!is_constrained(sub, sub.edge_handle(heh)) || !is_constrained(sub, sub.edge_handle(next))) continue;
-      const Point2 a = point2(sub, apex);
-      const double angle = angles_deg(a, point2(sub, sub.to_vertex_handle(next)), point2(sub, sub.from_vertex_handle(heh)))[0];
-      if (angle >= bounds_.max_deg - bounds_.margin_deg) return true;
-    }
+  /// A vertex on an unconstrained boundary edge: the frozen border of a region copy (its star is partial).
+  static bool on_frozen_border(const Mesh& sub, VertexHandle vh) {
+    for (auto heh : sub.voh_range(vh))
+      if (sub.is_boundary(sub.edge_handle(heh)) && !is_constrained(sub, sub.edge_handle(heh))) return true;
     return false;
+  }
+
+  /// Sectors around vh (between constrained or boundary edges; the whole star when none) whose
+  /// angle phi split among k triangles cannot meet the bounds: phi / k >= max, or phi / k < min for a
+  /// sector not narrower than min. Frozen border vertices of a region copy are skipped by the caller.
+  std::size_t infeasible_sectors(const Mesh& sub, VertexHandle vh) const {
+    auto is_wall = [&](HalfedgeHandle out) {
+      return is_constrained(sub, sub.edge_handle(out)) || sub.is_boundary(sub.opposite_halfedge_handle(out));
+    };
+    HalfedgeHandle start;
+    for (auto heh : sub.voh_range(vh))
+      if (!sub.is_boundary(heh) && is_wall(heh)) start = heh;
+    const bool closed = !start.is_valid();  // no wall: one sector, the full star
+    if (closed) {
+      if (sub.is_boundary(vh)) return 0;
+      start = sub.halfedge_handle(vh);
+    }
+    std::size_t count = 0;
+    double phi = 0;
+    int k = 0;
+    const Point2 p = point2(sub, vh);
+    HalfedgeHandle h = start;
+    for (int guard = 0; guard < 64; ++guard) {
+      const HalfedgeHandle back = sub.prev_halfedge_handle(h);
+      phi += angles_deg(p, point2(sub, sub.to_vertex_handle(h)), point2(sub, sub.from_vertex_handle(back)))[0];
+      ++k;
+      h = sub.opposite_halfedge_handle(back);
+      const bool end = h == start || sub.is_boundary(h) || (!closed && is_wall(h));
+      if (end) {
+        const double share = phi / k;
+        if (share >= bounds_.max_deg - bounds_.margin_deg || (phi >= bounds_.min_deg && share < bounds_.min_deg)) ++count;
+        phi = 0;
+        k = 0;
+        if (h == start || sub.is_boundary(h)) break;
+        if (sub.is_boundary(h)) break;
+      }
+    }
+    return count;
   }
 
   static bool face_is_exempt(const Mesh& mesh, FaceHandle fh, const std::vector<bool>& forced) {
@@ -249,10 +280,31 @@ class Repairer {
     }
   }
 
-  /// Tries the operations on copies of the region; keeps the best scoring result in `best`.
-  void try_candidates(const detail::Region& region, Mesh& best, Score& best_score) {
-    const Mesh& sub0 = region.sub;
-    const auto& forced = region.forced;
+  /// Best of the candidate operations; when `deep`, also every candidate applied to the four best
+  /// results of the first level (two-step edits for clusters no single operation improves).
+  void search(const detail::Region& region, bool deep, Mesh& best, Score& best_score) {
+    std::vector<Outcome> level1;
+    expand(region.sub, region.forced, level1);
+    for (auto& o : level1)
+      if (o.score < best_score) best_score = o.score, best = o.mesh;
+    if (!deep || best_score < score(region.sub, region.forced)) return;
+    std::sort(level1.begin(), level1.end(), [](const Outcome& a, const Outcome& b) { return a.score < b.score; });
+    if (level1.size() > 4) level1.resize(4);
+    for (const auto& first : level1) {
+      std::vector<Outcome> level2;
+      expand(first.mesh, region.forced, level2);
+      for (auto& o : level2)
+        if (o.score < best_score) best_score = o.score, best = std::move(o.mesh);
+    }
+  }
+
+  struct Outcome {
+    Score score;
+    Mesh mesh;
+  };
+
+  /// Applies each candidate operation to a copy of sub0 (then relocation) and collects the results.
+  void expand(const Mesh& sub0, const std::vector<bool>& forced, std::vector<Outcome>& out) {
     candidate_ = 0;
     auto attempt = [&](auto&& operation) {
       ++candidate_;
@@ -267,10 +319,7 @@ class Repairer {
       smooth_sub(sub, forced, 3);
       const Score s = score(sub, forced);
       if (trace_) std::fprintf(stderr, "    candidate %d: bad %zu worst %.4f\n", candidate_, s.bad, s.worst);
-      if (s < best_score) {
-        best_score = s;
-        best = std::move(sub);
-      }
+      out.push_back(Outcome{s, std::move(sub)});
     };
     attempt([](Mesh&) { return true; });  // smoothing alone
 
@@ -364,6 +413,7 @@ class Repairer {
   std::vector<bool> forced_;
   std::vector<EdgeHandle> queue_;
   int candidate_ = 0;
+  int stuck_ = 0;
   bool trace_ = std::getenv("ACUTE_TRACE") != nullptr;
   bool paranoid_ = std::getenv("ACUTE_PARANOID") != nullptr;
   RepairResult result_;
