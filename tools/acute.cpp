@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
   GlobalOptions global;
   int exit_code = ExitCode::Ok;
   add_mesh_command(app, global, exit_code);
+  add_repair_command(app, global, exit_code);
   add_stats_command(app, global, exit_code);
   add_render_command(app, global, exit_code);
   try {

@@ -24,5 +24,6 @@ int run_guarded(const std::function<int()>& body);
 void add_stats_command(CLI::App& app, const GlobalOptions& global, int& exit_code);
 void add_render_command(CLI::App& app, const GlobalOptions& global, int& exit_code);
 void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code);
+void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_code);
 
 }  // namespace acute::cli

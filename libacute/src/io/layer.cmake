@@ -12,5 +12,6 @@ acute_add_layer(io
     src/io/write_msh.cpp
     src/io/write_ply.cpp
     src/io/write_dual.cpp
+    src/io/write_cgshop_solution.cpp
   DEPENDS acute_mesh)
 target_link_libraries(acute_io PRIVATE nlohmann_json::nlohmann_json)

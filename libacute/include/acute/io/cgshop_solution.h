@@ -1,0 +1,36 @@
+// Layer: io. CG:SHOP 2025 solutions ("Minimum Non-Obtuse Triangulations"): the Steiner points of a
+// triangulation of an instance and its edges, with coordinates written exactly.
+#pragma once
+
+#include <acute/core/domain.h>
+#include <acute/mesh/mesh.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace acute::io {
+
+/// The exact value of a finite double as text: an integer ("-12", any size) or "p/q" in lowest
+/// terms (q a power of two). \throws InvalidInput for NaN or infinity.
+std::string exact_rational(double x);
+
+struct CgshopSolution {
+  std::string instance_uid;
+  std::vector<Point2> steiner_points;        ///< mesh vertices that are not domain points, in vertex order
+  std::vector<std::array<int, 2>> edges;     ///< every mesh edge; index < n_points: domain point, else Steiner
+  std::size_t n_points = 0;                  ///< domain points (the instance's points)
+};
+
+/// The solution a mesh of `domain` represents: a mesh vertex at a domain point (exact) is that
+/// point, any other used vertex a Steiner point. \throws InvalidInput when a domain point is not a
+/// mesh vertex (the triangulation would not be valid).
+CgshopSolution make_cgshop_solution(const Mesh& mesh, const Domain& domain);
+
+/// Writes {"content_type": "CG_SHOP_2025_Solution", "instance_uid", "steiner_points_x",
+/// "steiner_points_y", "edges", "meta"}: a coordinate is a JSON integer when it is one (|x| < 2^53),
+/// else an exact string "p/q" (or an integer string). Atomic. \throws IoError, InvalidInput.
+void write_cgshop_solution(const CgshopSolution& solution, const std::string& path);
+void write_cgshop_solution(const Mesh& mesh, const Domain& domain, const std::string& path);
+
+}  // namespace acute::io

@@ -1,0 +1,412 @@
+#include <acute/repair_mesh.h>
+
+#include <acute/core/errors.h>
+#include <acute/io/io.h>
+#include <acute/mesh/check.h>
+#include <acute/mesh/geometry.h>
+#include <acute/mesh/quality.h>
+#include <acute/predicates/predicates.h>
+#include <acute/repair/repair.h>
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+#include <string>
+
+namespace acute {
+
+namespace {
+
+constexpr double kDeg = 180.0 / 3.14159265358979323846;
+constexpr double kRightSlack = 1e-6;  ///< --allow-right: max bound 90 + this
+
+/// A boundary loop of the mesh as vertex indices, with the region on its left.
+using Loop = std::vector<int>;
+
+std::vector<Loop> boundary_loops(const Mesh& mesh) {
+  std::vector<char> seen(mesh.n_halfedges(), 0);
+  std::vector<Loop> loops;
+  for (auto heh : mesh.halfedges()) {
+    if (!mesh.is_boundary(heh) || seen[heh.idx()]) continue;
+    Loop loop;
+    auto h = heh;
+    do {  // boundary halfedges have the region on their right
+      seen[h.idx()] = 1;
+      loop.push_back(mesh.from_vertex_handle(h).idx());
+      h = mesh.next_halfedge_handle(h);
+    } while (h != heh && !seen[h.idx()]);
+    std::reverse(loop.begin(), loop.end());
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+/// Position in the loop of its lowest-leftmost vertex (a strictly convex corner of a simple loop).
+std::size_t lowest_corner(const std::vector<Point2>& pts, const Loop& loop) {
+  std::size_t low = 0;
+  for (std::size_t k = 1; k < loop.size(); ++k) {
+    const Point2 &p = pts[loop[k]], &q = pts[loop[low]];
+    if (p.y() < q.y() || (p.y() == q.y() && p.x() < q.x())) low = k;
+  }
+  return low;
+}
+
+/// +1 when the simple loop runs counter-clockwise, -1 clockwise (exact).
+int loop_orientation(const std::vector<Point2>& pts, const Loop& loop) {
+  const std::size_t n = loop.size(), low = lowest_corner(pts, loop);
+  const Sign s = predicates::orient2d(pts[loop[(low + n - 1) % n]], pts[loop[low]], pts[loop[(low + 1) % n]]);
+  return s == Sign::Negative ? -1 : 1;
+}
+
+/// Winding number of a closed polygon around p (exact; p must not lie on it).
+int winding_number(const std::vector<Point2>& pts, const Loop& loop, const Point2& p) {
+  int w = 0;
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    const Point2& a = pts[loop[k]];
+    const Point2& b = pts[loop[(k + 1) % loop.size()]];
+    if (a.y() <= p.y()) {
+      if (b.y() > p.y() && predicates::orient2d(a, b, p) == Sign::Positive) ++w;
+    } else if (b.y() <= p.y() && predicates::orient2d(a, b, p) == Sign::Negative) {
+      --w;
+    }
+  }
+  return w;
+}
+
+std::vector<Point2> vertex_points(const Mesh& mesh) {
+  std::vector<Point2> pts(mesh.n_vertices(), Point2(0, 0));
+  for (auto vh : mesh.vertices()) pts[vh.idx()] = point2(mesh, vh);
+  return pts;
+}
+
+/// Rewrites validate_domain's "segment K (points a-b)" / "point K" in mesh vertex numbers.
+std::string in_vertex_terms(const std::string& msg, const std::vector<int>& vertex_of_point) {
+  auto vertex = [&](const std::string& k) {
+    const auto i = static_cast<std::size_t>(std::stoul(k));
+    return std::to_string(i < vertex_of_point.size() ? vertex_of_point[i] : -1);
+  };
+  std::string out;
+  const std::regex token(R"(segment \d+ \(points (\d+)-(\d+)\)|point (\d+))");
+  auto it = std::sregex_iterator(msg.begin(), msg.end(), token);
+  std::size_t pos = 0;
+  for (; it != std::sregex_iterator(); ++it) {
+    const auto& m = *it;
+    out += msg.substr(pos, static_cast<std::size_t>(m.position()) - pos);
+    if (m[1].matched)
+      out += "edge " + vertex(m[1].str()) + "-" + vertex(m[2].str());
+    else
+      out += "vertex " + vertex(m[3].str());
+    pos = static_cast<std::size_t>(m.position() + m.length());
+  }
+  return out + msg.substr(pos);
+}
+
+void check_options(const RepairMeshOptions& o) {
+  if (!o.keep_vertices) {
+    if (!(o.min_angle_deg >= 0) || !(o.max_angle_deg <= 180) || !(o.min_angle_deg < o.max_angle_deg))
+      throw InvalidInput("angle bounds must satisfy 0 <= min < max <= 180");
+  } else if (o.feature_angle_deg > 0) {
+    throw InvalidInput("--feature-angle cannot be combined with --keep-vertices (every vertex is kept)");
+  }
+  if (!(o.feature_angle_deg >= 0 && o.feature_angle_deg < 45))
+    throw InvalidInput("--feature-angle must lie in [0, 45) degrees");
+  if (o.size < 0 || !std::isfinite(o.size)) throw InvalidInput("--size must be a positive number");
+}
+
+void notify(const RepairMeshOptions& o, const char* phase, int iteration = 0, std::size_t bad = 0) {
+  if (o.progress) o.progress(RepairMeshProgress{phase, iteration, bad});
+}
+
+/// Figures, remaining bad triangles and the status of a finished mesh.
+void finish(RepairMeshResult& r, const AngleBounds& bounds, const RepairMeshOptions& o, bool bounded, bool cancelled) {
+  r.mesh = compacted(r.mesh);
+  QualityOptions qopt;
+  qopt.min_angle_deg = bounds.min_deg;
+  qopt.max_angle_deg = bounds.max_deg;
+  const QualityReport q = measure_quality(r.mesh, qopt, &r.domain);
+  r.n_vertices = q.n_vertices;
+  r.n_triangles = q.n_triangles;
+  r.n_steiner = q.n_steiner.value_or(0);
+  r.min_angle_deg = q.min_angle;
+  r.max_angle_deg = q.max_angle;
+  r.n_obtuse_exact = r.n_right_exact = 0;
+  for (auto fh : r.mesh.faces()) {
+    const auto p = face_points(r.mesh, fh);
+    bool obtuse = false, right = false;
+    for (int k = 0; k < 3; ++k) {
+      const AngleKind kind = predicates::angle_kind(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+      obtuse = obtuse || kind == AngleKind::Obtuse;
+      right = right || kind == AngleKind::Right;
+    }
+    r.n_obtuse_exact += obtuse;
+    r.n_right_exact += right;
+  }
+  r.remaining.clear();
+  const auto bad = bad_triangles(r.mesh, bounds);
+  r.n_bad = bad.size();
+  for (auto fh : bad) {
+    if (r.remaining.size() >= 100) break;
+    BadTriangle t;
+    t.corners = face_points(r.mesh, fh);
+    const auto a = angles_deg(t.corners[0], t.corners[1], t.corners[2]);
+    t.min_angle_deg = *std::min_element(a.begin(), a.end());
+    t.max_angle_deg = *std::max_element(a.begin(), a.end());
+    r.remaining.push_back(t);
+  }
+  bool ok = r.n_bad == 0;
+  if (o.keep_vertices) ok = ok && r.n_obtuse_exact == 0 && (o.allow_right || r.n_right_exact == 0);
+  if (cancelled && !ok)
+    r.status = RepairMeshStatus::Cancelled;
+  else if (!bounded)
+    r.status = RepairMeshStatus::NotApplicable;
+  else
+    r.status = ok ? RepairMeshStatus::Ok : RepairMeshStatus::BoundsNotMet;
+}
+
+/// Runs repair_acute on r.mesh with the options' budget, progress and cancel.
+bool run_repair(RepairMeshResult& r, const AngleBounds& bounds, const RepairMeshOptions& o) {
+  notify(o, "repair");
+  RepairParams params;
+  params.bounds = bounds;
+  if (o.max_iterations > 0) params.max_iterations = o.max_iterations;
+  params.max_vertices = o.max_vertices;
+  params.time_limit_s = o.time_limit_s;
+  params.cancel = o.cancel;
+  if (o.progress) params.observer = [&](const RepairProgress& p) { notify(o, "repair", p.iteration, p.bad); };
+  const RepairResult rr = repair_acute(r.mesh, params);
+  r.iterations += rr.iterations;
+  return rr.status == RepairStatus::Cancelled;
+}
+
+}  // namespace
+
+const char* to_string(RepairMeshStatus status) {
+  switch (status) {
+    case RepairMeshStatus::Ok: return "ok";
+    case RepairMeshStatus::BoundsNotMet: return "bounds_not_met";
+    case RepairMeshStatus::Cancelled: return "cancelled";
+    case RepairMeshStatus::NotApplicable: return "n/a";
+  }
+  return "?";
+}
+
+void check_repairable(const Mesh& mesh) {
+  if (mesh.n_faces() == 0) throw InvalidInput("the mesh has no triangles");
+  const CheckReport report = check_mesh(mesh, CheckLevel::Geometry, 5);
+  if (!report.ok()) throw InvalidInput("not a valid planar triangulation: " + report.summary(1));
+
+  // Boundary loops: simple (no crossing, overlap or T-junction), and nested so that the winding
+  // number is 0 or 1 everywhere (all faces are counter-clockwise, so that rules out overlaps).
+  const std::vector<Point2> pts = vertex_points(mesh);
+  const std::vector<Loop> loops = boundary_loops(mesh);
+  Domain d;
+  std::vector<int> vertex_of_point, point_of_vertex(mesh.n_vertices(), -1);
+  for (auto vh : mesh.vertices()) {
+    if (mesh.is_isolated(vh)) continue;
+    point_of_vertex[vh.idx()] = static_cast<int>(d.points.size());
+    vertex_of_point.push_back(vh.idx());
+    d.points.push_back(pts[vh.idx()]);
+  }
+  for (const auto& loop : loops)
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      d.segments.push_back({point_of_vertex[loop[k]], point_of_vertex[loop[(k + 1) % loop.size()]]});
+  try {
+    io::validate_domain(d);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput("boundary: " + in_vertex_terms(e.what(), vertex_of_point));
+  }
+  const auto on = io::find_points_on_segments(d);
+  if (!on.empty()) {
+    const auto& s = d.segments[static_cast<std::size_t>(on.front().segment)];
+    throw InvalidInput("vertex " + std::to_string(vertex_of_point[on.front().point]) + " lies on boundary edge " +
+                       std::to_string(vertex_of_point[s[0]]) + "-" + std::to_string(vertex_of_point[s[1]]) +
+                       " (overlapping triangles or a T-junction)");
+  }
+  if (loops.size() > 1) {
+    std::vector<int> orientation;
+    for (const auto& loop : loops) orientation.push_back(loop_orientation(pts, loop));
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+      const Point2& p = pts[loops[i][0]];
+      int outside = 0;  // winding number just outside loop i (it lies on no other loop)
+      for (std::size_t j = 0; j < loops.size(); ++j)
+        if (j != i) outside += winding_number(pts, loops[j], p) != 0 ? orientation[j] : 0;
+      const int inside = outside + orientation[i];
+      if (outside < 0 || outside > 1 || inside < 0 || inside > 1)
+        throw InvalidInput("boundary loop through vertex " + std::to_string(loops[i][0]) +
+                           " is nested inside another loop so that part of the region is covered " +
+                           std::to_string(std::max(outside, inside)) + " times (overlapping triangles)");
+    }
+  }
+}
+
+Domain repair_domain(const Mesh& mesh, const RepairMeshOptions& o, std::vector<int>* vertex_of_point_out) {
+  const std::vector<Point2> pts = vertex_points(mesh);
+  const std::vector<Loop> loops = boundary_loops(mesh);
+  const auto nv = static_cast<int>(mesh.n_vertices());
+  for (std::size_t i = 0; i < o.features.size(); ++i) {
+    const auto& f = o.features[i];
+    const std::string name = "feature " + std::to_string(i) + " (" + std::to_string(f[0]) + ", " + std::to_string(f[1]) + ")";
+    if (f[0] < 0 || f[1] < 0 || f[0] >= nv || f[1] >= nv) throw InvalidInput(name + ": vertex index out of range");
+    if (!mesh.find_halfedge(VertexHandle(f[0]), VertexHandle(f[1])).is_valid())
+      throw InvalidInput(name + ": not an edge of the mesh");
+  }
+
+  // Which vertices the domain keeps as points.
+  std::vector<char> pinned(mesh.n_vertices(), 0);
+  for (const auto& f : o.features) pinned[f[0]] = pinned[f[1]] = 1;
+  std::vector<char> keep(mesh.n_vertices(), 0);
+  for (auto vh : mesh.vertices()) keep[vh.idx()] = o.keep_vertices || (mesh.is_boundary(vh) && !mesh.is_isolated(vh)) || pinned[vh.idx()];
+
+  // Boundary runs: with a feature angle, maximal runs whose edge directions spread less than it
+  // become one segment (ends: pinned vertices, each loop's lowest corner, sharper turns).
+  std::vector<std::array<int, 2>> segments;  // vertex indices
+  std::vector<int> markers;
+  const double feature = o.keep_vertices ? 0.0 : o.feature_angle_deg;
+  for (const auto& loop : loops) {
+    const std::size_t n = loop.size();
+    auto marker_of = [&](std::size_t k) {
+      const auto h = mesh.find_halfedge(VertexHandle(loop[k]), VertexHandle(loop[(k + 1) % n]));
+      return mesh.data(mesh.edge_handle(h)).marker;
+    };
+    if (feature <= 0) {
+      for (std::size_t k = 0; k < n; ++k) {
+        segments.push_back({loop[k], loop[(k + 1) % n]});
+        markers.push_back(marker_of(k));
+      }
+      continue;
+    }
+    const std::size_t low = lowest_corner(pts, loop);
+    std::vector<char> end(n, 0);
+    end[low] = end[(low + 1) % n] = end[(low + n - 1) % n] = 1;  // keeps the ear hole seeds use
+    for (std::size_t k = 0; k < n; ++k) end[k] = end[k] || pinned[loop[k]];
+    std::size_t k = 0;
+    while (k < n) {  // from an end, walk to the next end or until the directions spread too wide
+      const std::size_t a = (low + k) % n;
+      const Point2 e0 = pts[loop[(a + 1) % n]] - pts[loop[a]];
+      double lo = 0, hi = 0;
+      std::size_t len = 1;
+      while (k + len < n) {
+        const std::size_t b = (a + len) % n;  // candidate inner vertex
+        if (end[b]) break;
+        const Point2 e = pts[loop[(b + 1) % n]] - pts[loop[b]];
+        const double dir = std::atan2(e0.x() * e.y() - e0.y() * e.x(), e0.dot(e)) * kDeg;
+        const double nlo = std::min(lo, dir), nhi = std::max(hi, dir);
+        if (nhi - nlo >= feature) break;
+        lo = nlo;
+        hi = nhi;
+        ++len;
+      }
+      segments.push_back({loop[a], loop[(a + len) % n]});
+      markers.push_back(marker_of(a));
+      for (std::size_t i = 1; i < len; ++i) keep[loop[(a + i) % n]] = 0;
+      k += len;
+    }
+  }
+
+  Domain d;
+  std::vector<int> point_of_vertex(mesh.n_vertices(), -1), vertex_of_point;
+  for (auto vh : mesh.vertices()) {
+    if (!keep[vh.idx()]) continue;
+    point_of_vertex[vh.idx()] = static_cast<int>(d.points.size());
+    vertex_of_point.push_back(vh.idx());
+    d.points.push_back(pts[vh.idx()]);
+    d.point_markers.push_back(mesh.data(vh).marker);
+  }
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    d.segments.push_back({point_of_vertex[segments[i][0]], point_of_vertex[segments[i][1]]});
+    d.segment_markers.push_back(markers[i]);
+  }
+  for (const auto& f : o.features) {
+    if (mesh.is_boundary(mesh.edge_handle(mesh.find_halfedge(VertexHandle(f[0]), VertexHandle(f[1]))))) continue;
+    d.segments.push_back({point_of_vertex[f[0]], point_of_vertex[f[1]]});
+    d.segment_markers.push_back(0);
+  }
+  d.holes = io::domain_of_mesh(mesh).holes;
+  if (feature > 0) {
+    try {
+      io::validate_domain(d);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput("--feature-angle " + std::to_string(feature) + " merges boundary edges into crossing segments (" +
+                         in_vertex_terms(e.what(), vertex_of_point) + "); use a smaller angle");
+    }
+    // Every hole seed must still lie outside the merged region.
+    for (const auto& hole : d.holes) {
+      int w = 0;
+      for (std::size_t i = 0; i < segments.size(); ++i) {
+        const Point2 &a = pts[segments[i][0]], &b = pts[segments[i][1]];
+        if (a.y() <= hole.y()) {
+          if (b.y() > hole.y() && predicates::orient2d(a, b, hole) == Sign::Positive) ++w;
+        } else if (b.y() <= hole.y() && predicates::orient2d(a, b, hole) == Sign::Negative) {
+          --w;
+        }
+      }
+      if (w != 0) throw InvalidInput("--feature-angle " + std::to_string(feature) + " closes a hole; use a smaller angle");
+    }
+  }
+  if (vertex_of_point_out) *vertex_of_point_out = std::move(vertex_of_point);
+  return d;
+}
+
+RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOptions& options) {
+  RepairMeshOptions o = options;
+  o.keep_vertices = true;
+  check_options(o);
+  RepairMeshResult r;
+  r.domain = domain;
+  r.n_input_vertices = domain.points.size();
+  notify(o, "cdt");
+  CdtStats stats;
+  r.mesh = build_domain_cdt(domain, CdtOptions{}, &stats);
+  for (const auto& w : stats.warnings) r.notes.push_back(w);
+  if (stats.dropped_points > 0)
+    r.notes.push_back(std::to_string(stats.dropped_points) + " input point(s) outside the region dropped");
+  AngleBounds bounds;
+  bounds.min_deg = 0;
+  bounds.max_deg = o.allow_right ? 90.0 + kRightSlack : 90.0;
+  bool cancelled = o.cancel && o.cancel();
+  if (!cancelled) cancelled = run_repair(r, bounds, o);
+  finish(r, bounds, o, true, cancelled);
+  return r;
+}
+
+RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options) {
+  check_options(options);
+  notify(options, "check");
+  check_repairable(input);
+  Domain domain = repair_domain(input, options);
+  if (options.keep_vertices) {
+    RepairMeshResult r = repair_required_points(domain, options);
+    r.n_input_vertices = input.n_vertices();
+    return r;
+  }
+
+  RepairMeshResult r;
+  r.domain = std::move(domain);
+  r.n_input_vertices = input.n_vertices();
+  MeshOptions mo;
+  mo.method = options.method == Method::Acute ? Method::Cvt : options.method;  // repair below, with cancel
+  mo.min_angle_deg = options.min_angle_deg;
+  mo.max_angle_deg = options.max_angle_deg;
+  mo.size = options.size;
+  mo.target_vertices = options.target_vertices;
+  mo.seed = options.seed;
+  mo.max_vertices = options.max_vertices;
+  if (options.progress)
+    mo.observer = [&](const MeshProgress& p) { notify(options, p.phase.c_str(), p.iteration, p.bad); };
+  MeshResult m = generate_mesh(r.domain, mo);
+  r.mesh = std::move(m.mesh);
+  r.iterations = m.iterations;
+  r.notes = std::move(m.notes);
+  AngleBounds bounds;
+  bounds.min_deg = options.min_angle_deg;
+  bounds.max_deg = options.max_angle_deg;
+  bool cancelled = false;
+  if (options.method == Method::Acute) {
+    cancelled = options.cancel && options.cancel();
+    if (!cancelled) cancelled = run_repair(r, bounds, options);
+  }
+  finish(r, bounds, options, options.method == Method::Acute || options.method == Method::Refine, cancelled);
+  return r;
+}
+
+}  // namespace acute

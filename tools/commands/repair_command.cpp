@@ -1,0 +1,219 @@
+// `acute repair`: make an existing mesh acute (region and boundary kept), or keep every input
+// vertex and remove the obtuse angles (--keep-vertices; CG:SHOP 2025 instances and solutions).
+#include "commands/commands.h"
+
+#include <acute/core/errors.h>
+#include <acute/io/cgshop_solution.h>
+#include <acute/io/io.h>
+#include <acute/repair_mesh.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <unistd.h>
+
+namespace acute::cli {
+
+namespace {
+
+struct RepairArgs {
+  std::string input, features, method = "acute";
+  std::vector<std::string> outputs;
+  RepairMeshOptions options;
+  bool json = false;
+};
+
+std::string extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return std::filesystem::exists(b, ec) && std::filesystem::equivalent(a, b, ec);
+}
+
+/// Feature edges: one "a b" pair of 0-based vertex indices per line; '#' starts a comment.
+std::vector<std::array<int, 2>> read_features(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw IoError(path + ": cannot open");
+  std::vector<std::array<int, 2>> features;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream ls(line);
+    long long a = 0, b = 0;
+    if (!(ls >> a)) {
+      if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+      throw InvalidInput(path + ":" + std::to_string(number) + ": expected two vertex indices");
+    }
+    std::string rest;
+    if (!(ls >> b) || (ls >> rest) || a < 0 || b < 0 || a > 2147483647 || b > 2147483647 || a == b)
+      throw InvalidInput(path + ":" + std::to_string(number) + ": expected two distinct non-negative vertex indices");
+    features.push_back({static_cast<int>(a), static_cast<int>(b)});
+  }
+  return features;
+}
+
+int run_repair(RepairArgs args, const GlobalOptions& global) {
+  const auto t0 = std::chrono::steady_clock::now();
+  RepairMeshOptions& options = args.options;
+  const std::string in_ext = extension(args.input);
+  const bool domain_input = in_ext == ".json" || in_ext == ".poly";
+  if (in_ext == ".json") options.keep_vertices = true;  // a CG:SHOP instance: its points are required
+  if (domain_input && !options.keep_vertices)
+    throw InvalidInput(args.input + ": a domain, not a mesh: use `acute mesh` (or --keep-vertices)");
+  for (const auto& out : args.outputs) {
+    if (same_file(args.input, out)) throw IoError(out + ": refusing to overwrite the input file");
+    if (extension(out) == ".json") {
+      if (!options.keep_vertices) throw InvalidInput(out + ": a CG:SHOP solution needs --keep-vertices");
+    } else if (!io::is_mesh_output_path(out)) {
+      throw InvalidInput(out + ": unknown output format (use .json .off .obj .ply .node .ele .vtk .vtu .msh .svg)");
+    }
+  }
+  options.method = parse_method(args.method);
+  if (!args.features.empty()) {
+    if (domain_input) throw InvalidInput("--features needs a mesh input (.off .obj .ply .node .ele)");
+    options.features = read_features(args.features);
+  }
+  io::WarningSink warn = [&](const std::string& w) {
+    if (!global.quiet) std::cerr << "acute: warning: " << w << "\n";
+  };
+  const bool tty = isatty(STDERR_FILENO) && !global.quiet;
+  if (tty)
+    options.progress = [](const RepairMeshProgress& p) {
+      std::fprintf(stderr, "\r%-8s iteration %5d  bad %8zu", p.phase.c_str(), p.iteration, p.bad);
+      std::fflush(stderr);
+    };
+
+  RepairMeshResult result;
+  try {
+    if (domain_input) {
+      Domain domain = io::read_domain(args.input, warn);
+      result = repair_required_points(domain, options);
+    } else {
+      const Mesh mesh = io::read_mesh(args.input, warn);
+      result = repair_mesh(mesh, options);
+      result.domain.name = std::filesystem::path(args.input).stem().string();
+    }
+  } catch (const InvalidInput& e) {
+    const std::string what = e.what();
+    if (what.rfind(args.input, 0) == 0) throw;
+    throw InvalidInput(args.input + ": " + what);
+  }
+  if (tty) std::fprintf(stderr, "\r%60s\r", "");
+  for (const auto& note : result.notes) warn(note);
+
+  const double max_bound = options.keep_vertices ? (options.allow_right ? 90.000001 : 90.0) : options.max_angle_deg;
+  const double min_bound = options.keep_vertices ? 0.0 : options.min_angle_deg;
+  io::WriteOptions write_options;
+  write_options.min_angle_deg = min_bound;
+  write_options.max_angle_deg = max_bound;
+  write_options.title = result.domain.name;
+  for (const auto& out : args.outputs) {
+    if (extension(out) == ".json")
+      io::write_cgshop_solution(result.mesh, result.domain, out);
+    else
+      io::write_mesh(result.mesh, out, write_options);
+  }
+
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const bool not_met = result.status == RepairMeshStatus::BoundsNotMet || result.status == RepairMeshStatus::Cancelled;
+  if (not_met && !global.quiet) {
+    std::cerr << "acute: bounds not met: " << result.n_bad << " bad triangle(s)";
+    if (options.keep_vertices) std::cerr << ", " << result.n_obtuse_exact << " exactly obtuse";
+    std::cerr << " remain, e.g.\n";
+    for (std::size_t i = 0; i < result.remaining.size() && i < 5; ++i) {
+      const auto& t = result.remaining[i];
+      std::fprintf(stderr, "  triangle (%.17g, %.17g) (%.17g, %.17g) (%.17g, %.17g): angles %.3f..%.3f\n", t.corners[0].x(),
+                   t.corners[0].y(), t.corners[1].x(), t.corners[1].y(), t.corners[2].x(), t.corners[2].y(), t.min_angle_deg,
+                   t.max_angle_deg);
+    }
+  }
+  if (args.json) {
+    nlohmann::json j;
+    j["input"] = args.input;
+    j["outputs"] = args.outputs;
+    j["mode"] = options.keep_vertices ? "keep_vertices" : "remesh";
+    j["status"] = to_string(result.status);
+    j["min_angle_bound"] = min_bound;
+    j["max_angle_bound"] = max_bound;
+    j["n_input_vertices"] = result.n_input_vertices;
+    j["n_domain_points"] = result.domain.points.size();
+    j["n_vertices"] = result.n_vertices;
+    j["n_triangles"] = result.n_triangles;
+    j["n_steiner"] = result.n_steiner;
+    j["min_angle"] = result.min_angle_deg;
+    j["max_angle"] = result.max_angle_deg;
+    j["n_bad"] = result.n_bad;
+    j["n_obtuse_exact"] = result.n_obtuse_exact;
+    j["n_right_exact"] = result.n_right_exact;
+    j["iterations"] = result.iterations;
+    j["seconds"] = seconds;
+    if (!result.domain.instance_uid.empty()) j["instance_uid"] = result.domain.instance_uid;
+    std::cout << j.dump(2) << "\n";
+  } else if (!global.quiet) {
+    std::printf("repair: %zu vertices (%zu Steiner), %zu triangles, angles %.4f..%.4f deg, %zu bad, %d iterations, %.3f s\n",
+                result.n_vertices, result.n_steiner, result.n_triangles, result.min_angle_deg, result.max_angle_deg,
+                result.n_bad, result.iterations, seconds);
+  }
+  return not_met ? BoundsNotMet : Ok;
+}
+
+}  // namespace
+
+void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_code) {
+  auto args = std::make_shared<RepairArgs>();
+  auto* cmd = app.add_subcommand("repair", "Make an existing mesh acute, or non-obtuse keeping every vertex");
+  cmd->footer(
+      "Modes:\n"
+      "  default          remesh the region: boundary edges and vertices kept exactly, interior\n"
+      "                   vertices may move, go or be added; every angle in [--min-angle, --max-angle)\n"
+      "  --keep-vertices  every input vertex stays where it is; Steiner points are added until no\n"
+      "                   angle is obtuse (>= 90, or > 90 with --allow-right). CG:SHOP 2025 instances\n"
+      "                   (.json) are read in this mode; -o X.json writes a CG:SHOP 2025 solution.\n"
+      "Examples:\n"
+      "  acute repair ugly.off -o fixed.off\n"
+      "  acute repair ugly.obj -o fixed.off --features creases.txt --feature-angle 1\n"
+      "  acute repair inst.instance.json -o inst.solution.json -o inst.off --allow-right\n"
+      "Notes:\n"
+      "  --feature-angle drops boundary vertices (and with a non-straight run changes the region):\n"
+      "  the output then no longer keeps every boundary vertex, so `meshcheck OUT --domain IN`\n"
+      "  reports those vertices as missing; check such output against your own domain.\n"
+      "Exit codes: 0 ok, 1 bounds not met (best mesh still written), 2 invalid input, 3 I/O error.");
+  cmd->add_option("input", args->input, "Input mesh (.off .obj .ply .node .ele), or with --keep-vertices a domain (.json .poly)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args->outputs, "Output: a mesh (.off .obj .ply .vtk .vtu .msh .svg ...) or a CG:SHOP solution (.json); repeatable")
+      ->required();
+  auto* min = cmd->add_option("--min-angle", args->options.min_angle_deg, "Smallest allowed angle (degrees)")->capture_default_str();
+  auto* max = cmd->add_option("--max-angle", args->options.max_angle_deg, "Angles must be strictly below this (degrees)")
+                  ->capture_default_str();
+  auto* feature = cmd->add_option("--feature-angle", args->options.feature_angle_deg,
+                                  "Merge boundary runs straighter than this (degrees) into one segment");
+  cmd->add_option("--features", args->features, "File of interior edges to keep (vertex index pairs, 0-based)")
+      ->check(CLI::ExistingFile);
+  auto* keep = cmd->add_flag("--keep-vertices", args->options.keep_vertices, "Keep every input vertex; only remove obtuse angles");
+  keep->excludes(min)->excludes(max)->excludes(feature);
+  cmd->add_flag("--allow-right", args->options.allow_right, "With --keep-vertices (or .json input): right angles are fine");
+  cmd->add_option("--method", args->method, "Remesh method: cdt | refine | cvt | acute")->capture_default_str();
+  auto* size = cmd->add_option("--size", args->options.size, "Target edge length (default: graded)");
+  cmd->add_option("--vertices", args->options.target_vertices, "Target vertex count")->excludes(size);
+  cmd->add_option("--seed", args->options.seed, "Random seed (deterministic output)")->capture_default_str();
+  cmd->add_option("--max-iterations", args->options.max_iterations, "Repair iteration cap (0: default)");
+  cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();
+  cmd->add_option("--time-limit", args->options.time_limit_s, "Repair time limit in seconds (0: none)");
+  cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
+  cmd->add_flag("-q,--quiet", const_cast<GlobalOptions&>(global).quiet, "No output but errors");
+  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "More output");
+  cmd->callback([args, &global, &exit_code] { exit_code = run_guarded([&] { return run_repair(*args, global); }); });
+}
+
+}  // namespace acute::cli
