@@ -57,7 +57,7 @@ if [ -x "$acute" ]; then
     name=$(basename "${d%.*}")
     extra=(); [ "$name" = box ] && extra=(--convex-hull)
     runs=$((runs + 1))
-    timeout 600 "$acute" mesh "$d" -o "$out/acute_$name.off" --vertices 2000 -q "${extra[@]}" 2>"$out/acute_$name.err"
+    timeout 600 "$acute" mesh "$d" -o "$out/acute_$name.off" --vertices 2000 --time-limit 60 -q "${extra[@]}" 2>"$out/acute_$name.err"
     rc=$?
     if [ "$rc" -gt 1 ]; then
       echo "acute mesh FAILED (exit $rc) on $d: $(head -1 "$out/acute_$name.err")"; failures=$((failures + 1)); continue

@@ -100,9 +100,19 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       cp.seed = options.seed;
       if (options.observer)
         cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy}); };
-      CvtResult cvt = cvt_mesh(domain, cp);
-      result.mesh = std::move(cvt.mesh);
-      result.iterations = cvt.iterations;
+      try {
+        CvtResult cvt = cvt_mesh(domain, cp);
+        result.mesh = std::move(cvt.mesh);
+        result.iterations = cvt.iterations;
+      } catch (const InvalidInput& e) {
+        // The domain itself is fine (its CDT was built above): fall back to a refinement start.
+        result.notes.push_back(std::string("CVT start failed (") + e.what() + "); using a Delaunay refinement start");
+        RefineParams rp;
+        rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
+        rp.max_edge = target_edge(options, mesh_area(result.mesh));
+        rp.max_vertices = options.max_vertices;
+        refine(result.mesh, rp);
+      }
       if (options.method == Method::Cvt) break;
       notify("repair");
       RepairParams params;

@@ -35,7 +35,7 @@ class Repairer {
   Repairer(Mesh& mesh, const RepairParams& params) : mesh_(mesh), params_(params), bounds_(params.bounds) {}
 
   RepairResult run() {
-    const auto t0 = std::chrono::steady_clock::now();
+    t0_ = std::chrono::steady_clock::now();
     refresh_forced();
     if (paranoid_) {
       const std::string problem = detail::constraint_violation(mesh_);
@@ -68,8 +68,7 @@ class Repairer {
         result_.status = RepairStatus::IterationLimit;
         break;
       }
-      if (params_.time_limit_s > 0 &&
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > params_.time_limit_s) {
+      if (out_of_time()) {
         result_.status = RepairStatus::TimeLimit;
         break;
       }
@@ -92,6 +91,11 @@ class Repairer {
   }
 
  private:
+  bool out_of_time() const {
+    return params_.time_limit_s > 0 &&
+           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count() > params_.time_limit_s;
+  }
+
   void refresh_forced() { forced_ = forced_corner_vertices(mesh_, bounds_.min_deg); }
 
   bool forced(VertexHandle vh) const {
@@ -152,6 +156,7 @@ class Repairer {
     // copy, and the best one is written back when it improves the region.
     const int rings = 1 + it % 3;
     for (const auto& c : clusters) {
+      if (out_of_time()) break;
       bool stale = false;
       for (auto fh : c.bad) stale = stale || mesh_.status(fh).deleted();
       for (auto vh : c.vertices) stale = stale || mesh_.status(vh).deleted();
@@ -413,6 +418,7 @@ class Repairer {
   std::vector<bool> forced_;
   std::vector<EdgeHandle> queue_;
   int candidate_ = 0;
+  std::chrono::steady_clock::time_point t0_;
   int stuck_ = 0;
   bool trace_ = std::getenv("ACUTE_TRACE") != nullptr;
   bool paranoid_ = std::getenv("ACUTE_PARANOID") != nullptr;
