@@ -21,8 +21,8 @@
 
 namespace {
 
-// Circumradius bound H / sqrt(3) with this H gives about 1M triangles at 20.7 degrees.
-constexpr double kMaxEdge = 0.00175;
+// Circumradius bound H / sqrt(3) with this H gives about 1M triangles.
+constexpr double kMaxEdge = 0.002;
 
 acute::Domain unit_square() {
   acute::Domain d;
