@@ -277,7 +277,8 @@ Domain repair_domain(const Mesh& mesh, const RepairMeshOptions& o, std::vector<i
     }
     const std::size_t low = lowest_corner(pts, loop);
     std::vector<char> end(n, 0);
-    end[low] = end[(low + 1) % n] = end[(low + n - 1) % n] = 1;  // keeps the ear hole seeds use
+    end[low] = 1;
+    if (loop_orientation(pts, loop) < 0) end[(low + 1) % n] = end[(low + n - 1) % n] = 1;  // the ear a hole seed uses
     for (std::size_t k = 0; k < n; ++k) end[k] = end[k] || pinned[loop[k]];
     std::size_t k = 0;
     while (k < n) {  // from an end, walk to the next end or until the directions spread too wide

@@ -1,0 +1,5 @@
+acute_add_test(pipeline_tests
+  SOURCES
+    pipeline/repair_mesh_test.cpp
+    pipeline/cgshop_solution_test.cpp
+  LIBS acute_pipeline acute_io nlohmann_json::nlohmann_json)
