@@ -29,7 +29,7 @@ import json, os
 j = json.loads(os.environ["JSON"]); q = j.get("quality") or {}; m = float(os.environ["MIN"])
 f = lambda x: "-" if x is None else (f"{x:.3f}" if isinstance(x, float) else str(x))
 fm = q.get("free_min_angle")
-bad = j["exit_code"] != 0 or (fm is not None and fm < m)
+bad = j["exit_code"] != 0 or (fm is not None and fm < m - 1e-9)  # meshcheck's angle tolerance
 print(f"| {os.environ['NAME']} | {j['exit_code']} | {q.get('n_vertices')} | {q.get('n_triangles')} | {f(q.get('min_angle'))} | {f(fm)} | "
       f"{f(q.get('max_angle'))} | {q.get('n_below_min_free')} | {float(os.environ['SECS']):.2f} |" + (" FAIL" if bad else ""))
 PY
