@@ -33,7 +33,10 @@ namespace pr = acute::predicates;
 /// A finding: print it and abort, so that libFuzzer saves the input as a crash. Findings that
 /// contain one of the '|'-separated texts in ACUTE_FUZZ_IGNORE (known, reported bugs) return
 /// instead, so that a long run can look past them; the caller then gives up on the input.
+/// ACUTE_FUZZ_ONLY=text: only findings containing text count (for -minimize_crash on one bug).
 inline void fail(const std::string& what) {
+  if (const char* only = std::getenv("ACUTE_FUZZ_ONLY"))
+    if (what.find(only) == std::string::npos) return;
   if (const char* ignore = std::getenv("ACUTE_FUZZ_IGNORE")) {
     std::string list = ignore;
     for (std::size_t b = 0; b <= list.size();) {
