@@ -23,7 +23,7 @@ namespace acute::cli {
 namespace {
 
 struct RepairArgs {
-  std::string input, features, method = "acute";
+  std::string input, features, method = "acute", start = "auto";
   std::vector<std::string> outputs;
   RepairMeshOptions options;
   bool json = false;
@@ -79,6 +79,11 @@ int run_repair(RepairArgs args, const GlobalOptions& global) {
     }
   }
   options.method = parse_method(args.method);
+  if (args.start == "auto") options.start = RequiredStart::Auto;
+  else if (args.start == "cdt") options.start = RequiredStart::Cdt;
+  else if (args.start == "refine") options.start = RequiredStart::Refine;
+  else if (args.start == "cvt") options.start = RequiredStart::Cvt;
+  else throw InvalidInput("unknown --start '" + args.start + "' (expected auto, cdt, refine or cvt)");
   if (!args.features.empty()) {
     if (domain_input) throw InvalidInput("--features needs a mesh input (.off .obj .ply .node .ele)");
     options.features = read_features(args.features);
@@ -156,6 +161,7 @@ int run_repair(RepairArgs args, const GlobalOptions& global) {
     j["n_obtuse_exact"] = result.n_obtuse_exact;
     j["n_right_exact"] = result.n_right_exact;
     j["iterations"] = result.iterations;
+    if (!result.start.empty()) j["start"] = result.start;
     j["seconds"] = seconds;
     if (!result.domain.instance_uid.empty()) j["instance_uid"] = result.domain.instance_uid;
     std::cout << j.dump(2) << "\n";
@@ -203,6 +209,7 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
   auto* keep = cmd->add_flag("--keep-vertices", args->options.keep_vertices, "Keep every input vertex; only remove obtuse angles");
   keep->excludes(min)->excludes(max)->excludes(feature);
   cmd->add_flag("--allow-right", args->options.allow_right, "With --keep-vertices (or .json input): right angles are fine");
+  cmd->add_option("--start", args->start, "--keep-vertices start: auto | cdt | refine | cvt")->capture_default_str();
   cmd->add_option("--method", args->method, "Remesh method: cdt | refine | cvt | acute")->capture_default_str();
   auto* size = cmd->add_option("--size", args->options.size, "Target edge length (default: graded)");
   cmd->add_option("--vertices", args->options.target_vertices, "Target vertex count")->excludes(size);

@@ -21,6 +21,14 @@ struct RepairMeshProgress {
   std::size_t bad = 0;   ///< bad triangles left (repair)
 };
 
+/// The start of the required-points repair.
+enum class RequiredStart {
+  Auto,    ///< Cdt, then Refine, then Cvt until one meets the bound (fewest Steiner points first)
+  Cdt,     ///< the bare constrained Delaunay triangulation of the points
+  Refine,  ///< Delaunay refinement of it (min angle 20)
+  Cvt      ///< the CVT mesh with every input point fixed
+};
+
 struct RepairMeshOptions {
   /// Keep every input vertex exactly (interior ones too) and only bound the max angle: the
   /// required-points mode. Bounds default to min 0, max 90 (strict) then.
@@ -35,13 +43,14 @@ struct RepairMeshOptions {
   double feature_angle_deg = 0;
   /// Interior edges to keep (vertex index pairs of the input mesh; must be mesh edges).
   std::vector<std::array<int, 2>> features;
+  RequiredStart start = RequiredStart::Auto;  ///< keep_vertices only
   Method method = Method::Acute;  ///< default mode only
   double size = 0;                 ///< target edge length (0: graded)
   std::size_t target_vertices = 0; ///< 0: as many as the input has (graded)
   unsigned seed = 1;
   int max_iterations = 0;          ///< 0: the repair's default
   std::size_t max_vertices = 50'000'000;
-  double time_limit_s = 0;         ///< repair phase; 0: none
+  double time_limit_s = 0;         ///< repair phase (all starts together with keep_vertices); 0: none
   std::function<void(const RepairMeshProgress&)> progress;
   std::function<bool()> cancel;    ///< polled during the repair; true stops it (best mesh kept)
 };
@@ -64,6 +73,7 @@ struct RepairMeshResult {
   std::size_t n_right_exact = 0;   ///< triangles with an exactly right angle
   double min_angle_deg = 0, max_angle_deg = 0;
   int iterations = 0;
+  std::string start;            ///< required points: the start that was kept ("cdt", "refine", "cvt")
   std::vector<BadTriangle> remaining;  ///< first bad triangles left (up to 100)
   std::vector<std::string> notes;
 };
@@ -82,8 +92,10 @@ Domain repair_domain(const Mesh& mesh, const RepairMeshOptions& options, std::ve
 /// are ignored). \throws InvalidInput for an invalid mesh, features or options.
 RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options = {});
 
-/// Required-points mode on a domain (e.g. a CG:SHOP instance): the bare CDT of the domain, then
-/// the repair with min 0 and max 90 (or 90 + 1e-6 with allow_right). Every input point stays.
+/// Required-points mode on a domain (e.g. a CG:SHOP instance): a start mesh holding every input
+/// point (options.start), then the repair with min 0 and max 90 (or 90 + 1e-6 with allow_right).
+/// With RequiredStart::Auto the starts are tried in order of cost in Steiner points, each with a
+/// share of the time limit, until one meets the bound exactly; else the one with fewest bad triangles.
 RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOptions& options = {});
 
 /// The library entry point for a user's OpenMesh triangle mesh of any traits: repairs it and

@@ -5,10 +5,14 @@
 #include <acute/mesh/check.h>
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/quality.h>
+#include <acute/ops/remove.h>
 #include <acute/predicates/predicates.h>
+#include <acute/refine/refine.h>
 #include <acute/repair/repair.h>
+#include <acute/cvt/cvt.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <regex>
 #include <string>
@@ -176,6 +180,42 @@ bool run_repair(RepairMeshResult& r, const AngleBounds& bounds, const RepairMesh
   const RepairResult rr = repair_acute(r.mesh, params);
   r.iterations += rr.iterations;
   return rr.status == RepairStatus::Cancelled;
+}
+
+/// True when no face is bad under the bounds nor exactly obtuse (nor exactly right unless allowed).
+bool meets_required_bounds(const Mesh& mesh, const AngleBounds& bounds, bool allow_right) {
+  if (!bad_triangles(mesh, bounds).empty()) return false;
+  for (auto fh : mesh.faces()) {
+    const auto p = face_points(mesh, fh);
+    for (int k = 0; k < 3; ++k) {
+      const AngleKind kind = predicates::angle_kind(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+      if (kind == AngleKind::Obtuse || (kind == AngleKind::Right && !allow_right)) return false;
+    }
+  }
+  return true;
+}
+
+/// Removes Steiner points one at a time while the mesh still meets the bounds (passes until
+/// none can go). Returns the number removed.
+std::size_t prune_steiner(Mesh& mesh, const AngleBounds& bounds, const RepairMeshOptions& o,
+                          std::chrono::steady_clock::time_point deadline) {
+  std::size_t removed = 0;
+  for (bool progress = true; progress;) {
+    progress = false;
+    for (auto vh : mesh.vertices()) {
+      if (is_input(mesh, vh) || mesh.status(vh).deleted()) continue;
+      if ((o.cancel && o.cancel()) || std::chrono::steady_clock::now() > deadline) return removed;
+      if (can_remove_vertex(mesh, vh) != OpVerdict::Ok) continue;
+      Mesh before = mesh;
+      if (remove_vertex(mesh, vh) && meets_required_bounds(mesh, bounds, o.allow_right)) {
+        ++removed;
+        progress = true;
+      } else {
+        mesh = std::move(before);
+      }
+    }
+  }
+  return removed;
 }
 
 }  // namespace
@@ -352,22 +392,67 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
   RepairMeshOptions o = options;
   o.keep_vertices = true;
   check_options(o);
-  RepairMeshResult r;
-  r.domain = domain;
-  r.n_input_vertices = domain.points.size();
-  notify(o, "cdt");
-  CdtStats stats;
-  r.mesh = build_domain_cdt(domain, CdtOptions{}, &stats);
-  for (const auto& w : stats.warnings) r.notes.push_back(w);
-  if (stats.dropped_points > 0)
-    r.notes.push_back(std::to_string(stats.dropped_points) + " input point(s) outside the region dropped");
   AngleBounds bounds;
   bounds.min_deg = 0;
   bounds.max_deg = o.allow_right ? 90.0 + kRightSlack : 90.0;
-  bool cancelled = o.cancel && o.cancel();
-  if (!cancelled) cancelled = run_repair(r, bounds, o);
-  finish(r, bounds, o, true, cancelled);
-  return r;
+
+  std::vector<RequiredStart> starts = {o.start};
+  if (o.start == RequiredStart::Auto) starts = {RequiredStart::Cdt, RequiredStart::Refine, RequiredStart::Cvt};
+  const auto t0 = std::chrono::steady_clock::now();
+  RepairMeshResult best;
+  bool have = false;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    RepairMeshResult r;
+    r.domain = domain;
+    r.n_input_vertices = domain.points.size();
+    notify(o, "cdt");
+    CdtStats stats;
+    r.mesh = build_domain_cdt(domain, CdtOptions{}, &stats);
+    for (const auto& w : stats.warnings) r.notes.push_back(w);
+    if (stats.dropped_points > 0)
+      r.notes.push_back(std::to_string(stats.dropped_points) + " input point(s) outside the region dropped");
+    if (starts[k] == RequiredStart::Refine) {
+      notify(o, "refine");
+      RefineParams rp;
+      rp.min_angle_deg = 20;
+      rp.max_vertices = o.max_vertices;
+      refine(r.mesh, rp);
+      r.start = "refine";
+    } else if (starts[k] == RequiredStart::Cvt) {
+      notify(o, "cvt");
+      CvtParams cp;
+      cp.graded = true;
+      cp.seed = o.seed;
+      r.mesh = cvt_mesh(domain, cp).mesh;
+      r.start = "cvt";
+    } else {
+      r.start = "cdt";
+    }
+    // Each start gets an equal share of what is left of the time limit.
+    RepairMeshOptions ok = o;
+    if (o.time_limit_s > 0) {
+      const double used = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      ok.time_limit_s = std::max(0.05, (o.time_limit_s - used) / static_cast<double>(starts.size() - k));
+    }
+    bool cancelled = o.cancel && o.cancel();
+    if (!cancelled) cancelled = run_repair(r, bounds, ok);
+    if (!cancelled && meets_required_bounds(r.mesh, bounds, o.allow_right)) {
+      notify(o, "prune");
+      const auto deadline = o.time_limit_s > 0 ? t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                           std::chrono::duration<double>(o.time_limit_s * 1.5))
+                                               : std::chrono::steady_clock::time_point::max();
+      prune_steiner(r.mesh, bounds, o, deadline);
+    }
+    finish(r, bounds, o, true, cancelled);
+    const bool better = !have || r.status == RepairMeshStatus::Ok ||
+                        (best.status != RepairMeshStatus::Ok && r.n_bad + r.n_obtuse_exact < best.n_bad + best.n_obtuse_exact);
+    if (better) {
+      best = std::move(r);
+      have = true;
+    }
+    if (best.status == RepairMeshStatus::Ok || best.status == RepairMeshStatus::Cancelled) break;
+  }
+  return best;
 }
 
 RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options) {
