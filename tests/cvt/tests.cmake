@@ -3,4 +3,5 @@ acute_add_test(cvt_tests
     cvt/size_field_test.cpp
     cvt/voronoi_test.cpp
     cvt/cvt_test.cpp
-  LIBS acute_cvt)
+    cvt/regression_test.cpp
+  LIBS acute_cvt acute_io)

@@ -3,6 +3,7 @@
 #include <acute/core/errors.h>
 #include <acute/delaunay/cdt.h>
 #include <acute/mesh/geometry.h>
+#include <acute/ops/insert.h>
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
@@ -58,6 +59,8 @@ void divide(const SizeField& field, const Point2& a, const Point2& u, double s0,
     if (k2 > k) integrate(k = k2, cum);
   }
   const double total = cum.back();
+  // Rounded to nearest: rounding up splits every piece slightly longer than h into two short
+  // ones, which measured worse (more obtuse triangles on the classic domains).
   const int n = std::max(1, static_cast<int>(std::lround(total)));
   std::size_t i = 0;
   for (int j = 1; j < n; ++j) {
@@ -121,6 +124,72 @@ Mesh with_coherent_faces(const Mesh& in) {
   return out;
 }
 
+/// The boundary mesh with the interior points added: one build_cdt over all the points and the
+/// constrained edges (fast), accepted when it keeps every point and every constrained edge as
+/// one edge; otherwise the points are inserted one by one (exact, slower).
+Mesh with_interior_points(const Mesh& bmesh, const std::vector<Point2>& holes, const std::vector<Point2>& interior, SamplingStats& stats) {
+  Domain bd;
+  bd.name = "cvt samples";
+  bd.holes = holes;
+  for (auto vh : bmesh.vertices()) bd.points.push_back(point2(bmesh, vh));
+  const std::size_t nb = bd.points.size();
+  bd.points.insert(bd.points.end(), interior.begin(), interior.end());
+  std::vector<EdgeHandle> seg_edge;
+  for (auto eh : bmesh.edges()) {
+    if (!is_constrained(bmesh, eh)) continue;
+    const auto h = bmesh.halfedge_handle(eh, 0);
+    bd.segments.push_back({bmesh.from_vertex_handle(h).idx(), bmesh.to_vertex_handle(h).idx()});
+    bd.segment_markers.push_back(0);
+    seg_edge.push_back(eh);
+  }
+  Mesh m;
+  bool ok = false;
+  try {
+    CdtStats cs;
+    m = build_cdt(bd, {}, &cs);
+    std::size_t constrained = 0;
+    for (auto eh : m.edges()) constrained += is_constrained(m, eh) ? 1 : 0;
+    ok = m.n_vertices() == bd.points.size() && constrained == bd.segments.size() && cs.points_on_segments == 0 &&
+         cs.merged_duplicates == 0 && cs.crossings_split == 0;
+  } catch (const InvalidInput&) {
+    ok = false;
+  }
+  if (ok) {
+    for (auto vh : m.vertices()) {
+      auto& d = m.data(vh);
+      const auto i = static_cast<std::size_t>(d.input_index);
+      if (i < nb) {
+        d = bmesh.data(VertexHandle(static_cast<int>(i)));
+      } else {
+        d = {};
+        d.kind = VertexKind::Free;
+      }
+    }
+    for (auto eh : m.edges()) {
+      auto& d = m.data(eh);
+      if (d.segment >= 0) d = bmesh.data(seg_edge[static_cast<std::size_t>(d.segment)]);
+    }
+    stats.interior_samples = interior.size();
+    return m;
+  }
+  m = bmesh;
+  FaceHandle start = *m.faces_begin();
+  for (const Point2& p : interior) {
+    const std::size_t before = m.n_vertices();
+    const VertexHandle vh = insert_point(m, p, start);
+    if (!vh.is_valid() || m.n_vertices() == before) continue;  // blocked or an existing vertex: dropped
+    auto& d = m.data(vh);
+    d = {};
+    d.kind = VertexKind::Free;
+    ++stats.interior_samples;
+    for (auto fh : m.vf_range(vh)) {
+      start = fh;
+      break;
+    }
+  }
+  return m;
+}
+
 }  // namespace
 
 Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field, const SamplingParams& params, SamplingStats* stats_out) {
@@ -142,17 +211,16 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     return static_cast<std::size_t>(s) < domain.segment_markers.size() ? domain.segment_markers[static_cast<std::size_t>(s)] : 0;
   };
 
-  Domain bd;
-  bd.name = domain.name;
-  bd.holes = domain.holes;
-  std::vector<int> point_input, point_marker, point_seg;  // per point of bd: input index, marker, segment id
-  for (auto vh : cdt.vertices()) {
-    bd.points.push_back(point2(cdt, vh));
-    point_input.push_back(cdt.data(vh).input_index);
-    point_marker.push_back(cdt.data(vh).marker);
-    point_seg.push_back(-1);
-  }
-  const std::size_t n_fixed = bd.points.size();
+  // The boundary mesh: the input CDT with its constrained edges split in place (split_edge checks
+  // every new triangle exactly, so no point can land on the wrong side of a nearby feature).
+  Mesh mesh = cdt;
+  for (auto eh : cdt.edges())
+    if (cdt.data(eh).segment < 0 && edge_seg[static_cast<std::size_t>(eh.idx())] >= 0) {
+      mesh.data(eh).segment = edge_seg[static_cast<std::size_t>(eh.idx())];
+      mesh.data(eh).marker = 0;
+    }
+  set_segment_table(mesh, table);
+  for (auto vh : mesh.vertices()) mesh.data(vh).kind = VertexKind::Input;
 
   // Concentric shells: the first point on every constrained edge at a corner below 60 degrees is at
   // the same distance from the apex.
@@ -184,6 +252,12 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
   }
 
   // Divide every constrained edge of the input CDT.
+  struct Piece {
+    VertexHandle a, b;
+    int segment;
+    std::vector<Point2> cuts;
+  };
+  std::vector<Piece> pieces;
   std::vector<double> cuts;
   for (auto eh : cdt.edges()) {
     const int s = edge_seg[static_cast<std::size_t>(eh.idx())];
@@ -198,27 +272,27 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     if (ra > 0) cuts.push_back(ra);
     divide(field, a, u, ra, len - rb, hint, cuts);
     if (rb > 0) cuts.push_back(len - rb);
-    int prev = va.idx();
-    for (double c : cuts) {
-      // Interpolate from the nearer end for accuracy.
-      const Point2 p = c <= 0.5 * len ? Point2(a + c * u) : Point2(b - (len - c) * u);
-      const int idx = static_cast<int>(bd.points.size());
-      bd.points.push_back(p);
-      point_input.push_back(-1);
-      point_marker.push_back(seg_marker(s));
-      point_seg.push_back(s);
-      bd.segments.push_back({prev, idx});
-      bd.segment_markers.push_back(s);  // temporarily: the original segment id
-      prev = idx;
-    }
-    bd.segments.push_back({prev, vb.idx()});
-    bd.segment_markers.push_back(s);
+    Piece piece{va, vb, s, {}};
+    // Interpolate from the nearer end for accuracy.
+    for (double c : cuts) piece.cuts.push_back(c <= 0.5 * len ? Point2(a + c * u) : Point2(b - (len - c) * u));
+    pieces.push_back(std::move(piece));
   }
-  stats.boundary_samples = bd.points.size() - n_fixed;
-  std::vector<int> sub_seg = bd.segment_markers;
-  for (int& m : bd.segment_markers) m = seg_marker(m);
-
-  Mesh mesh = build_cdt(bd);
+  for (const Piece& piece : pieces) {
+    VertexHandle prev = piece.a;
+    for (const Point2& p : piece.cuts) {
+      const auto h = mesh.find_halfedge(prev, piece.b);
+      ACUTE_ASSERT(h.is_valid());
+      const VertexHandle vh = split_edge(mesh, mesh.edge_handle(h), p);
+      if (!vh.is_valid()) continue;  // would make a flat or inverted triangle: leave the piece longer
+      auto& d = mesh.data(vh);
+      d.kind = VertexKind::OnSegment;
+      d.segment = piece.segment;
+      d.marker = seg_marker(piece.segment);
+      d.input_index = -1;
+      prev = vh;
+      ++stats.boundary_samples;
+    }
+  }
 
   if (params.sample_interior) {
     // Stratified sampling per triangle of the boundary CDT.
@@ -231,7 +305,7 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     };
     std::vector<Tri> stack;
     std::vector<std::pair<Point2, Point2>> near_segments;
-    const std::size_t n_before = bd.points.size();
+    std::vector<Point2> interior;
     for (auto fh : mesh.faces()) {
       const auto fp = face_points(mesh, fh);
       near_segments.clear();
@@ -279,35 +353,13 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
             break;
           }
         if (!keep) continue;
-        bd.points.push_back(p);
-        point_input.push_back(-1);
-        point_marker.push_back(0);
-        point_seg.push_back(-1);
+        interior.push_back(p);
       }
     }
-    stats.interior_samples = bd.points.size() - n_before;
-    sort_morton(bd.points.begin() + static_cast<std::ptrdiff_t>(n_before), bd.points.end());
-    if (stats.interior_samples > 0) mesh = build_cdt(bd);
+    sort_morton(interior.begin(), interior.end());
+    if (!interior.empty()) mesh = with_interior_points(mesh, domain.holes, interior, stats);
   }
 
-  for (auto vh : mesh.vertices()) {
-    auto& d = mesh.data(vh);
-    const auto i = static_cast<std::size_t>(d.input_index);
-    ACUTE_ASSERT(d.input_index >= 0 && i < bd.points.size());
-    d.marker = point_marker[i];
-    d.segment = point_seg[i];
-    if (i < n_fixed) {
-      d.kind = VertexKind::Input;
-      d.input_index = point_input[i];
-    } else {
-      d.kind = point_seg[i] >= 0 ? VertexKind::OnSegment : VertexKind::Free;
-      d.input_index = -1;
-    }
-  }
-  for (auto eh : mesh.edges()) {
-    auto& d = mesh.data(eh);
-    if (d.segment >= 0) d.segment = sub_seg[static_cast<std::size_t>(d.segment)];
-  }
   mesh = with_coherent_faces(mesh);
   set_segment_table(mesh, std::move(table));
   if (stats_out) *stats_out = stats;

@@ -183,58 +183,146 @@ double predicted_vertex_count(const Mesh& mesh, const SizeField& field) {
 
 namespace {
 
-/// Distance from p to segment ab and the foot point.
+/// Distance from p to segment ab, and the nearest point.
 double segment_distance(const Point2& p, const Point2& a, const Point2& b, Point2& foot) {
   const Point2 d = b - a;
   const double l2 = d.squaredNorm();
-  double t = l2 > 0 ? (p - a).dot(d) / l2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
+  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
   foot = a + t * d;
   return (p - foot).norm();
 }
 
-}  // namespace
+/// The vertices and constrained/boundary edges of a mesh in a bucket grid, for exact
+/// nearest-feature distances with features incident to given vertices excluded.
+class FeatureGrid {
+ public:
+  explicit FeatureGrid(const Mesh& mesh) {
+    std::vector<int> vmap(mesh.n_vertices(), -1);
+    for (auto vh : mesh.vertices()) {
+      if (mesh.status(vh).deleted() || mesh.is_isolated(vh)) continue;
+      vmap[static_cast<std::size_t>(vh.idx())] = static_cast<int>(points_.size());
+      points_.push_back(point2(mesh, vh));
+      vertex_of_.push_back(vh.idx());
+    }
+    for (auto eh : mesh.edges()) {
+      if (mesh.status(eh).deleted() || !(is_constrained(mesh, eh) || mesh.is_boundary(eh))) continue;
+      const auto h = mesh.halfedge_handle(eh, 0);
+      edges_.push_back({vmap[static_cast<std::size_t>(mesh.from_vertex_handle(h).idx())],
+                        vmap[static_cast<std::size_t>(mesh.to_vertex_handle(h).idx())]});
+    }
+    index_of_.assign(mesh.n_vertices(), -1);
+    for (std::size_t i = 0; i < vertex_of_.size(); ++i) index_of_[static_cast<std::size_t>(vertex_of_[i])] = static_cast<int>(i);
+    lo_ = hi_ = points_.empty() ? Point2(0, 0) : points_[0];
+    for (const Point2& p : points_) lo_ = lo_.cwiseMin(p), hi_ = hi_.cwiseMax(p);
+    const double w = hi_.x() - lo_.x(), ht = hi_.y() - lo_.y();
+    const double n = static_cast<double>(std::max<std::size_t>(points_.size(), 1));
+    cell_ = std::max({std::sqrt(w * ht / n), std::max(w, ht) / 2048.0, std::numeric_limits<double>::min()});
+    nx_ = static_cast<int>(w / cell_) + 1;
+    ny_ = static_cast<int>(ht / cell_) + 1;
+    // Counting pass, then fill (CSR); items: vertex i -> i, edge k -> n_points + k.
+    std::vector<std::pair<int, int>> pairs;  // (cell, item)
+    for (std::size_t i = 0; i < points_.size(); ++i) pairs.emplace_back(cell_of(points_[i]), static_cast<int>(i));
+    for (std::size_t k = 0; k < edges_.size(); ++k) {
+      const Point2 a = points_[static_cast<std::size_t>(edges_[k][0])], b = points_[static_cast<std::size_t>(edges_[k][1])];
+      const int item = static_cast<int>(points_.size() + k);
+      // Row bands: the x-range of the edge within each row, widened by one cell for rounding.
+      const int j0 = row(std::min(a.y(), b.y())), j1 = row(std::max(a.y(), b.y()));
+      for (int j = j0; j <= j1; ++j) {
+        const double y0 = lo_.y() + j * cell_, y1 = y0 + cell_;
+        double xa = a.x(), xb = b.x();
+        if (a.y() != b.y()) {
+          const auto x_at = [&](double y) { return a.x() + (b.x() - a.x()) * std::clamp((y - a.y()) / (b.y() - a.y()), 0.0, 1.0); };
+          xa = x_at(y0), xb = x_at(y1);
+        }
+        const int i0 = std::max(0, col(std::min(xa, xb)) - 1), i1 = std::min(nx_ - 1, col(std::max(xa, xb)) + 1);
+        for (int i = i0; i <= i1; ++i) pairs.emplace_back(j * nx_ + i, item);
+      }
+    }
+    start_.assign(static_cast<std::size_t>(nx_) * static_cast<std::size_t>(ny_) + 1, 0);
+    for (const auto& pr : pairs) ++start_[static_cast<std::size_t>(pr.first) + 1];
+    for (std::size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    items_.resize(pairs.size());
+    std::vector<int> fill(start_.begin(), start_.end() - 1);
+    for (const auto& pr : pairs) items_[static_cast<std::size_t>(fill[static_cast<std::size_t>(pr.first)]++)] = pr.second;
+  }
 
-SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& params) {
-  const DomainMeasures dm = measure_domain(cdt);
-  if (!(dm.diameter > 0)) throw InvalidInput("size field: the domain has no extent");
-  const double hmax = params.hmax > 0 ? params.hmax : dm.diameter / 25.0;
-  const double hmin = params.hmin > 0 ? std::min(params.hmin, hmax) : std::min(1e-6 * dm.diameter, hmax);
-  const double slope = std::max(params.gradation - 1.0, 0.0);
+  std::size_t num_points() const { return points_.size(); }
+  const Point2& point(std::size_t i) const { return points_[i]; }
+  const std::vector<std::array<int, 2>>& edges() const { return edges_; }
+  /// Grid index of mesh vertex idx (-1: not a feature).
+  int index_of(int vertex_idx) const { return index_of_[static_cast<std::size_t>(vertex_idx)]; }
+
+  /// Distance from p to the nearest feature that is not grid vertex x0/x1 and has no endpoint
+  /// among them (infinity when there is none).
+  double nearest(const Point2& p, int x0, int x1, Point2* foot = nullptr) const {
+    const int ci = col(p.x()), cj = row(p.y());
+    double best = std::numeric_limits<double>::infinity();
+    Point2 best_foot = p;
+    const int kmax = std::max(nx_, ny_);
+    for (int k = 0; k <= kmax; ++k) {
+      // Cells at Chebyshev ring k are at least (k - 1) * cell_ away (one cell of rasterisation slack).
+      if (best <= (k - 1) * cell_) break;
+      for (int j = cj - k; j <= cj + k; ++j) {
+        if (j < 0 || j >= ny_) continue;
+        const int step = (j == cj - k || j == cj + k) ? 1 : 2 * k;
+        for (int i = ci - k; i <= ci + k; i += std::max(step, 1)) {
+          if (i < 0 || i >= nx_) continue;
+          const auto c = static_cast<std::size_t>(j * nx_ + i);
+          for (int s = start_[c]; s < start_[c + 1]; ++s) {
+            const int item = items_[static_cast<std::size_t>(s)];
+            if (item < static_cast<int>(points_.size())) {
+              if (item == x0 || item == x1) continue;
+              const double d = (points_[static_cast<std::size_t>(item)] - p).norm();
+              if (d < best) best = d, best_foot = points_[static_cast<std::size_t>(item)];
+            } else {
+              const auto& e = edges_[static_cast<std::size_t>(item) - points_.size()];
+              if (e[0] == x0 || e[0] == x1 || e[1] == x0 || e[1] == x1) continue;
+              Point2 q;
+              const double d = segment_distance(p, points_[static_cast<std::size_t>(e[0])], points_[static_cast<std::size_t>(e[1])], q);
+              if (d < best) best = d, best_foot = q;
+            }
+          }
+        }
+      }
+    }
+    if (foot) *foot = best_foot;
+    return best;
+  }
+
+ private:
+  int col(double x) const { return std::clamp(static_cast<int>(std::floor((x - lo_.x()) / cell_)), 0, nx_ - 1); }
+  int row(double y) const { return std::clamp(static_cast<int>(std::floor((y - lo_.y()) / cell_)), 0, ny_ - 1); }
+  int cell_of(const Point2& p) const { return row(p.y()) * nx_ + col(p.x()); }
+
+  std::vector<Point2> points_;
+  std::vector<int> vertex_of_, index_of_;
+  std::vector<std::array<int, 2>> edges_;
+  Point2 lo_{0, 0}, hi_{0, 0};
+  double cell_ = 1;
+  int nx_ = 1, ny_ = 1;
+  std::vector<int> start_, items_;
+};
+
+/// The graded field from lfs samples: values clamp(lfs_factor * lfs, hmin, hmax), a grid at about hmax,
+/// then gradation-limited along the Delaunay edges of those points.
+SizeField graded_field(const LfsSamples& samples, const DomainMeasures& dm, double lfs_factor, double hmin, double hmax, double gradation) {
+  const double slope = std::max(gradation - 1.0, 0.0);
   const double inf = std::numeric_limits<double>::infinity();
-
   std::vector<Point2> points;
   std::vector<double> values;
-  // Input points: the nearest other point among the neighbours, the nearest constrained edge opposite
-  // in the star (its foot becomes a background point too, so the segment gets the small size).
-  for (auto vh : cdt.vertices()) {
-    const Point2 p = point2(cdt, vh);
-    double lfs = inf;
-    for (auto w : cdt.vv_range(vh)) lfs = std::min(lfs, (point2(cdt, w) - p).norm());
-    Point2 best_foot(0, 0);
-    bool has_foot = false;
-    for (auto heh : cdt.voh_range(vh)) {
-      if (cdt.is_boundary(heh)) continue;
-      const auto opp = cdt.next_halfedge_handle(heh);
-      if (!is_constrained(cdt, cdt.edge_handle(opp))) continue;
-      Point2 foot;
-      const double d = segment_distance(p, point2(cdt, cdt.from_vertex_handle(opp)), point2(cdt, cdt.to_vertex_handle(opp)), foot);
-      if (d < lfs) lfs = d, best_foot = foot, has_foot = true;
-    }
-    if (!(lfs < inf)) continue;  // isolated
-    const double h = std::clamp(params.lfs_factor * lfs, hmin, hmax);
-    points.push_back(p);
-    values.push_back(h);
-    if (has_foot) {
-      points.push_back(best_foot);
-      values.push_back(h);
-    }
+  points.reserve(samples.points.size());
+  values.reserve(samples.points.size());
+  for (std::size_t i = 0; i < samples.points.size(); ++i) {
+    if (!(samples.lfs[i] < inf)) continue;
+    points.push_back(samples.points[i]);
+    values.push_back(std::clamp(lfs_factor * samples.lfs[i], hmin, hmax));
   }
   // A coarse grid at hmax lets the size grow away from the features.
   {
     double xmin = inf, ymin = inf, xmax = -inf, ymax = -inf;
-    for (const Point2& p : points) xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x()), ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
-    const double step = std::max(hmax, dm.diameter / 200.0);
+    for (const Point2& p : samples.points) xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x()), ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
+    // Fine enough that the size can grow between the features (values in between are linear).
+    const double step = std::clamp(hmax, dm.diameter / 200.0, dm.diameter / 50.0);
     const int nx = static_cast<int>(std::floor((xmax - xmin) / step)), ny = static_cast<int>(std::floor((ymax - ymin) / step));
     const double ox = xmin + 0.5 * ((xmax - xmin) - nx * step), oy = ymin + 0.5 * ((ymax - ymin) - ny * step);
     for (int j = 1; j < ny; ++j)
@@ -269,20 +357,103 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
   return SizeField::piecewise_linear(std::move(points), std::move(triangles), std::move(values));
 }
 
+}  // namespace
+
+LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap) {
+  if (!(spacing_cap > 0)) throw InvalidInput("size field: the lfs spacing cap must be positive");
+  const FeatureGrid grid(cdt);
+  LfsSamples out;
+  const std::size_t nv = grid.num_points();
+  std::vector<double> vertex_lfs(nv);
+  for (std::size_t i = 0; i < nv; ++i) {
+    Point2 foot;
+    vertex_lfs[i] = grid.nearest(grid.point(i), static_cast<int>(i), static_cast<int>(i), &foot);
+    out.points.push_back(grid.point(i));
+    out.lfs.push_back(vertex_lfs[i]);
+    // The nearest point of that feature gets the same size (a vertex close to the middle of a
+    // long segment makes the segment small there).
+    if (foot != grid.point(i)) {
+      out.points.push_back(foot);
+      out.lfs.push_back(vertex_lfs[i]);
+    }
+  }
+  for (const auto& e : grid.edges()) {
+    const Point2 a = grid.point(static_cast<std::size_t>(e[0])), b = grid.point(static_cast<std::size_t>(e[1]));
+    const double len = (b - a).norm();
+    if (!(len > 0)) continue;
+    const Point2 u = (b - a) / len;
+    // lfs is 1-Lipschitz: samples one lfs apart keep it within a factor 2 in between.
+    auto step = [&](double d) { return std::max(std::min(d, spacing_cap), len / 16.0); };
+    const double end_step = step(vertex_lfs[static_cast<std::size_t>(e[1])]);
+    for (double t = step(vertex_lfs[static_cast<std::size_t>(e[0])]); t < len - 0.5 * end_step;) {
+      const Point2 x = a + t * u;
+      const double d = grid.nearest(x, e[0], e[1]);
+      out.points.push_back(x);
+      out.lfs.push_back(d);
+      t += step(d);
+    }
+  }
+  return out;
+}
+
+SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& params) {
+  const DomainMeasures dm = measure_domain(cdt);
+  if (!(dm.diameter > 0)) throw InvalidInput("size field: the domain has no extent");
+  const double hmax = params.hmax > 0 ? params.hmax : dm.diameter / 25.0;
+  const double hmin = params.hmin > 0 ? std::min(params.hmin, hmax) : std::min(1e-6 * dm.diameter, hmax);
+  return graded_field(local_feature_size_samples(cdt, hmax), dm, params.lfs_factor, hmin, hmax, params.gradation);
+}
+
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) {
+  // With a vertex count, the lfs-bound field may exceed it by this factor at most.
+  constexpr double kMaxExcess = 16.0;
   if (params.size < 0 || !std::isfinite(params.size)) throw InvalidInput("size field: --size must be positive");
   if (params.size > 0) return SizeField::uniform(params.size);
   if (params.target_vertices > 0) {
-    const double h = size_for_vertex_count(measure_domain(input_cdt), params.target_vertices);
-    if (!params.graded) return SizeField::uniform(h);
-    SizeFieldParams p = params;
-    p.hmax = h;
-    SizeField f = local_feature_size_field(input_cdt, p);
+    const DomainMeasures dm = measure_domain(input_cdt);
+    const double hn = size_for_vertex_count(dm, params.target_vertices);
+    if (!params.graded) return SizeField::uniform(hn);
+    // The graded field with hmax = hn is <= hn everywhere, so it predicts >= N vertices; raise hmax
+    // (never the lfs-bound values) until the count comes down to N, or to hmax = diameter.
     const double target = static_cast<double>(params.target_vertices);
-    for (int k = 0; k < 8; ++k) {
-      const double ratio = predicted_vertex_count(input_cdt, f) / target;
-      if (std::abs(ratio - 1.0) < 0.01) break;
-      f.scale(std::sqrt(ratio));
+    const double hmin = params.hmin > 0 ? std::min(params.hmin, hn) : std::min(1e-6 * dm.diameter, hn);
+    const LfsSamples samples = local_feature_size_samples(input_cdt, hn);
+    auto field_at = [&](double hmax) { return graded_field(samples, dm, params.lfs_factor, hmin, hmax, params.gradation); };
+    const double top = std::max(hn, dm.diameter);
+    SizeField ft = field_at(top);
+    const double at_top = predicted_vertex_count(input_cdt, ft);
+    if (at_top >= target) {
+      // The features alone need more than N: keep h <= lfs (the count exceeds the target) unless
+      // that is over kMaxExcess * N; then coarsen the lfs-bound sizes by a common factor lambda
+      // (count ~ 1 / lambda^2 there: a few secant steps).
+      const double cap = kMaxExcess * target;
+      if (at_top <= cap) return ft;
+      double lambda = params.lfs_factor, count = at_top;
+      for (int k = 0; k < 5 && std::abs(count / cap - 1.0) >= 0.1; ++k) {
+        lambda *= std::sqrt(count / cap);
+        ft = graded_field(samples, dm, lambda, hmin, top, params.gradation);
+        count = predicted_vertex_count(input_cdt, ft);
+      }
+      return ft;
+    }
+    SizeField f = field_at(hn);
+    double ratio = predicted_vertex_count(input_cdt, f) / target;
+    if (ratio <= 1.02) {
+      // At or below the target (the count model is not exact): refine uniformly, never coarsen
+      // (the values at the features are the lfs).
+      for (int k = 0; k < 8 && ratio < 0.99; ++k) {
+        f.scale(std::sqrt(ratio));
+        ratio = predicted_vertex_count(input_cdt, f) / target;
+      }
+      return f;
+    }
+    double lo = hn, hi = top;  // count(lo) > target > count(hi)
+    for (int k = 0; k < 30; ++k) {
+      const double mid = std::sqrt(lo * hi);
+      f = field_at(mid);
+      ratio = predicted_vertex_count(input_cdt, f) / target;
+      if (std::abs(ratio - 1.0) < 0.02 || hi / lo < 1.001) break;
+      (ratio > 1.0 ? lo : hi) = mid;
     }
     return f;
   }

@@ -82,16 +82,30 @@ double size_for_vertex_count(const DomainMeasures& measures, std::size_t n);
 /// along mesh boundary edges + 1.
 double predicted_vertex_count(const Mesh& mesh, const SizeField& field);
 
-/// The graded field of the input: h = lfs_factor * lfs at every input point (distance to the
-/// nearest input point or segment not incident to it, taken from the input CDT: neighbours and the
-/// constrained edges opposite it in its star; the feet on those segments are added as background
-/// points), plus a coarse grid at hmax; clamped to [hmin, hmax] and gradation-limited along the
+/// Local feature size samples of the input CDT. Features: the vertices and the constrained (or
+/// boundary) edges. At every vertex v: the distance to the nearest feature not incident to v.
+/// (also put at the nearest point of that feature). Along every constrained edge ab, at spacing
+/// about min(lfs, spacing_cap) (at least length / 16): the distance to the
+/// nearest feature sharing no endpoint with ab (so two walls of a narrow channel see each other
+/// all along, not only at their endpoints). Exact nearest-feature search over a bucket grid:
+/// features across the whole domain count, not only CDT neighbours.
+struct LfsSamples {
+  std::vector<Point2> points;
+  std::vector<double> lfs;
+};
+LfsSamples local_feature_size_samples(const Mesh& input_cdt, double spacing_cap);
+
+/// The graded field of the input: h = lfs_factor * lfs at the local_feature_size_samples (spacing
+/// cap hmax), plus a coarse grid at hmax; clamped to [hmin, hmax] and gradation-limited along the
 /// edges of the Delaunay triangulation of those points (Dijkstra), which is the background mesh.
 SizeField local_feature_size_field(const Mesh& input_cdt, const SizeFieldParams& params);
 
 /// Chooses the field from params: uniform(size); for target_vertices uniform, or (graded) the graded
-/// field with hmax = the uniform size, scaled until the predicted count is within 1% of the target;
-/// else the graded field.
+/// field with hmax >= the uniform size h_N for N vertices, hmax chosen so the predicted count is
+/// within 2% of N. The field never exceeds lfs_factor * lfs: when the features alone need more
+/// than N vertices, the count exceeds the target (hmax then the diameter), up to 16 N; beyond
+/// that the lfs-bound sizes are coarsened by a common factor to about 16 N (pathological inputs
+/// such as thousands of needle-thin spikes). Else the graded field.
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params);
 
 }  // namespace acute
