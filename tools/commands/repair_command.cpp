@@ -26,7 +26,7 @@ struct RepairArgs {
   std::string input, features, method = "acute", start = "auto";
   std::vector<std::string> outputs;
   RepairMeshOptions options;
-  bool json = false;
+  bool json = false, exact = false;
 };
 
 std::string extension(const std::string& path) {
@@ -125,6 +125,8 @@ int run_repair(RepairArgs args, const GlobalOptions& global) {
   for (const auto& out : args.outputs) {
     if (extension(out) == ".json")
       io::write_cgshop_solution(result.mesh, result.domain, out);
+    else if (args.exact && extension(out) == ".off")
+      io::write_off_exact(result.mesh, out);
     else
       io::write_mesh(result.mesh, out, write_options);
   }
@@ -217,6 +219,8 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
   cmd->add_option("--max-iterations", args->options.max_iterations, "Repair iteration cap (0: default)");
   cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();
   cmd->add_option("--time-limit", args->options.time_limit_s, "Repair time limit in seconds (0: none)");
+  cmd->add_flag("--exact", args->exact,
+                ".off output: vertices on slanted segments as exact rationals \"p/q\" lying on the segment (meshcheck reads them)");
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", const_cast<GlobalOptions&>(global).quiet, "No output but errors");
   cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "More output");

@@ -3,12 +3,15 @@
 #include "io/atomic_file.h"
 
 #include <acute/core/errors.h>
+#include <acute/mesh/segments.h>
+#include <acute/predicates/predicates.h>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <utility>
 
@@ -44,6 +47,150 @@ std::string shifted_decimal(std::uint64_t m, int k) {
   return out;
 }
 
+/// Exact dyadic number mantissa * 2^exponent, the mantissa a sign-magnitude big integer (32-bit
+/// limbs, little-endian). Just enough for a + t (b - a) on doubles.
+struct Dyadic {
+  bool negative = false;
+  std::vector<std::uint32_t> mag;
+  int exponent = 0;
+
+  static Dyadic of(double x) {
+    Dyadic d;
+    if (x == 0) return d;
+    int e = 0;
+    const double f = std::frexp(std::abs(x), &e);
+    const auto m = static_cast<std::uint64_t>(std::ldexp(f, 53));
+    d.negative = x < 0;
+    d.mag = {static_cast<std::uint32_t>(m), static_cast<std::uint32_t>(m >> 32)};
+    d.exponent = e - 53;
+    d.trim();
+    return d;
+  }
+  void trim() {
+    while (!mag.empty() && mag.back() == 0) mag.pop_back();
+    if (mag.empty()) negative = false, exponent = 0;
+  }
+  Dyadic shifted_mantissa(int bits) const {  // same value, exponent lowered by bits
+    Dyadic r = *this;
+    if (mag.empty() || bits == 0) return r;
+    r.mag.assign(static_cast<std::size_t>(bits / 32), 0);
+    std::uint32_t carry = 0;
+    const int rem = bits % 32;
+    for (std::uint32_t limb : mag) {
+      r.mag.push_back(static_cast<std::uint32_t>((std::uint64_t{limb} << rem) | carry));
+      carry = rem ? static_cast<std::uint32_t>(limb >> (32 - rem)) : 0;
+    }
+    r.mag.push_back(carry);
+    r.exponent = exponent - bits;
+    r.trim();
+    return r;
+  }
+  static int compare_mag(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b) {
+    if (a.size() != b.size()) return a.size() < b.size() ? -1 : 1;
+    for (std::size_t i = a.size(); i-- > 0;)
+      if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+    return 0;
+  }
+  friend Dyadic operator+(const Dyadic& x, const Dyadic& y) {
+    if (x.mag.empty()) return y;
+    if (y.mag.empty()) return x;
+    const int e = std::min(x.exponent, y.exponent);
+    const Dyadic a = x.shifted_mantissa(x.exponent - e), b = y.shifted_mantissa(y.exponent - e);
+    Dyadic r;
+    r.exponent = e;
+    if (a.negative == b.negative) {
+      r.negative = a.negative;
+      std::uint64_t carry = 0;
+      for (std::size_t i = 0; i < std::max(a.mag.size(), b.mag.size()); ++i) {
+        const std::uint64_t v = carry + (i < a.mag.size() ? a.mag[i] : 0) + (i < b.mag.size() ? b.mag[i] : 0);
+        r.mag.push_back(static_cast<std::uint32_t>(v));
+        carry = v >> 32;
+      }
+      r.mag.push_back(static_cast<std::uint32_t>(carry));
+    } else {
+      const bool a_big = compare_mag(a.mag, b.mag) >= 0;
+      const Dyadic& big = a_big ? a : b;
+      const Dyadic& small = a_big ? b : a;
+      r.negative = big.negative;
+      std::int64_t borrow = 0;
+      for (std::size_t i = 0; i < big.mag.size(); ++i) {
+        std::int64_t v = std::int64_t{big.mag[i]} - borrow - (i < small.mag.size() ? std::int64_t{small.mag[i]} : 0);
+        borrow = v < 0;
+        if (v < 0) v += std::int64_t{1} << 32;
+        r.mag.push_back(static_cast<std::uint32_t>(v));
+      }
+    }
+    r.trim();
+    return r;
+  }
+  friend Dyadic operator*(const Dyadic& x, const Dyadic& y) {
+    Dyadic r;
+    if (x.mag.empty() || y.mag.empty()) return r;
+    std::vector<std::uint64_t> acc(x.mag.size() + y.mag.size() + 1, 0);
+    for (std::size_t i = 0; i < x.mag.size(); ++i) {
+      std::uint64_t carry = 0;
+      for (std::size_t j = 0; j < y.mag.size(); ++j) {
+        const std::uint64_t v = acc[i + j] + std::uint64_t{x.mag[i]} * y.mag[j] + carry;
+        acc[i + j] = v & 0xffffffffu;
+        carry = v >> 32;
+      }
+      acc[i + y.mag.size()] += carry;
+    }
+    for (auto v : acc) r.mag.push_back(static_cast<std::uint32_t>(v));
+    r.negative = x.negative != y.negative;
+    r.exponent = x.exponent + y.exponent;
+    r.trim();
+    return r;
+  }
+  Dyadic negated() const {
+    Dyadic r = *this;
+    r.negative = !mag.empty() && !negative;
+    return r;
+  }
+  /// "m" or "m/2^k" in lowest terms, in decimal.
+  std::string text() const {
+    if (mag.empty()) return "0";
+    std::vector<std::uint32_t> m = mag;
+    int e = exponent;
+    while (e < 0 && (m[0] & 1) == 0) {  // strip factors of two
+      for (std::size_t i = 0; i < m.size(); ++i) m[i] = (m[i] >> 1) | (i + 1 < m.size() ? m[i + 1] << 31 : 0);
+      ++e;
+    }
+    std::string digits;  // decimal of m by repeated division by 10^9
+    while (!(m.size() == 1 && m[0] == 0) && !m.empty()) {
+      std::uint64_t rem = 0;
+      for (std::size_t i = m.size(); i-- > 0;) {
+        const std::uint64_t cur = (rem << 32) | m[i];
+        m[i] = static_cast<std::uint32_t>(cur / 1'000'000'000);
+        rem = cur % 1'000'000'000;
+      }
+      while (m.size() > 1 && m.back() == 0) m.pop_back();
+      std::string part = std::to_string(rem);
+      const bool last = m.size() == 1 && m[0] == 0;
+      if (!last) part = std::string(9 - part.size(), '0') + part;
+      digits = part + digits;
+    }
+    std::string out = negative ? "-" : "";
+    if (e >= 0) {
+      if (e == 0) return out + digits;
+      return out + shifted_decimal_big(digits, e);
+    }
+    return out + digits + "/" + shifted_decimal(1, -e);
+  }
+  static std::string shifted_decimal_big(std::string digits, int e) {  // decimal digits * 2^e
+    for (; e > 0; --e) {
+      int carry = 0;
+      for (std::size_t i = digits.size(); i-- > 0;) {
+        const int v = (digits[i] - '0') * 2 + carry;
+        digits[i] = static_cast<char>('0' + v % 10);
+        carry = v / 10;
+      }
+      if (carry) digits.insert(digits.begin(), static_cast<char>('0' + carry));
+    }
+    return digits;
+  }
+};
+
 bool is_json_integer(double x) { return std::floor(x) == x && std::abs(x) < 9007199254740992.0; }
 
 nlohmann::ordered_json coordinate(double x) {
@@ -70,6 +217,49 @@ std::string exact_rational(double x) {
   return text + shifted_decimal(m, 0) + "/" + shifted_decimal(1, -e);
 }
 
+std::array<std::string, 2> exact_coordinates(const Mesh& mesh, VertexHandle vh) {
+  const Point2 p = point2(mesh, vh);
+  const int seg = mesh.data(vh).segment;
+  if (mesh.data(vh).kind == VertexKind::OnSegment && seg >= 0 && static_cast<std::size_t>(seg) < segment_table(mesh).size()) {
+    const auto& [a, b] = segment_endpoints(mesh, seg);
+    if (predicates::orient2d(a, b, p) != Sign::Zero) {
+      const Point2 d = b - a;
+      const double t = std::clamp((p - a).dot(d) / d.squaredNorm(), 0.0, 1.0);
+      const Dyadic tt = Dyadic::of(t);
+      const Dyadic x = Dyadic::of(a.x()) + tt * (Dyadic::of(b.x()) + Dyadic::of(a.x()).negated());
+      const Dyadic y = Dyadic::of(a.y()) + tt * (Dyadic::of(b.y()) + Dyadic::of(a.y()).negated());
+      return {x.text(), y.text()};
+    }
+  }
+  return {exact_rational(p.x()), exact_rational(p.y())};
+}
+
+void write_off_exact(const Mesh& mesh, const std::string& path) {
+  std::vector<int> index(mesh.n_vertices(), -1);
+  int n = 0;
+  for (auto vh : mesh.vertices()) index[vh.idx()] = n++;
+  detail::AtomicFile file(path);
+  auto& out = file.stream();
+  out << "OFF\n" << n << " " << mesh.n_faces() << " 0\n";
+  char buf[64];
+  for (auto vh : mesh.vertices()) {
+    const Point2 p = point2(mesh, vh);
+    const auto exact = exact_coordinates(mesh, vh);
+    if (exact[0] == exact_rational(p.x()) && exact[1] == exact_rational(p.y())) {
+      std::snprintf(buf, sizeof buf, "%.17g %.17g", p.x(), p.y());
+      out << buf << " 0\n";
+    } else {
+      out << exact[0] << " " << exact[1] << " 0\n";
+    }
+  }
+  for (auto fh : mesh.faces()) {
+    out << "3";
+    for (auto fv : mesh.fv_range(fh)) out << " " << index[fv.idx()];
+    out << "\n";
+  }
+  file.commit();
+}
+
 CgshopSolution make_cgshop_solution(const Mesh& mesh, const Domain& domain) {
   CgshopSolution s;
   s.instance_uid = domain.instance_uid.empty() ? domain.name : domain.instance_uid;
@@ -89,6 +279,7 @@ CgshopSolution make_cgshop_solution(const Mesh& mesh, const Domain& domain) {
     } else {
       index[vh.idx()] = static_cast<int>(s.n_points + s.steiner_points.size());
       s.steiner_points.push_back(p);
+      s.steiner_exact.push_back(exact_coordinates(mesh, vh));
     }
   }
   for (std::size_t i = 0; i < present.size(); ++i)
@@ -108,9 +299,17 @@ void write_cgshop_solution(const CgshopSolution& solution, const std::string& pa
   j["content_type"] = "CG_SHOP_2025_Solution";
   j["instance_uid"] = solution.instance_uid;
   auto xs = nlohmann::ordered_json::array(), ys = nlohmann::ordered_json::array();
-  for (const auto& p : solution.steiner_points) {
-    xs.push_back(coordinate(p.x()));
-    ys.push_back(coordinate(p.y()));
+  for (std::size_t i = 0; i < solution.steiner_points.size(); ++i) {
+    const Point2& p = solution.steiner_points[i];
+    const bool exact = i < solution.steiner_exact.size();
+    if (exact && solution.steiner_exact[i][0] != exact_rational(p.x()))
+      xs.push_back(solution.steiner_exact[i][0]);
+    else
+      xs.push_back(coordinate(p.x()));
+    if (exact && solution.steiner_exact[i][1] != exact_rational(p.y()))
+      ys.push_back(solution.steiner_exact[i][1]);
+    else
+      ys.push_back(coordinate(p.y()));
   }
   j["steiner_points_x"] = std::move(xs);
   j["steiner_points_y"] = std::move(ys);

@@ -5,6 +5,7 @@
 #include <acute/mesh/check.h>
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/quality.h>
+#include <acute/mesh/segments.h>
 #include <acute/ops/remove.h>
 #include <acute/predicates/predicates.h>
 #include <acute/refine/refine.h>
@@ -123,7 +124,9 @@ void notify(const RepairMeshOptions& o, const char* phase, int iteration = 0, st
 
 /// Figures, remaining bad triangles and the status of a finished mesh.
 void finish(RepairMeshResult& r, const AngleBounds& bounds, const RepairMeshOptions& o, bool bounded, bool cancelled) {
+  SegmentTable table = segment_table(r.mesh);  // compacted() does not copy the table
   r.mesh = compacted(r.mesh);
+  set_segment_table(r.mesh, std::move(table));
   QualityOptions qopt;
   qopt.min_angle_deg = bounds.min_deg;
   qopt.max_angle_deg = bounds.max_deg;

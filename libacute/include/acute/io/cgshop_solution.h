@@ -15,9 +15,21 @@ namespace acute::io {
 /// terms (q a power of two). \throws InvalidInput for NaN or infinity.
 std::string exact_rational(double x);
 
+/// Exact text of a vertex's coordinates. A vertex on an input segment (kind OnSegment, segment
+/// table set) whose double position is off the segment's exact line (rounding, on slanted
+/// segments) is written as the point a + t (b - a) of the segment, t its double parameter: a
+/// dyadic rational exactly on the segment, within about an ulp of the double. Other vertices:
+/// exact_rational of their doubles.
+std::array<std::string, 2> exact_coordinates(const Mesh& mesh, VertexHandle vh);
+
+/// OFF with exact coordinates (exact_coordinates; "p/q" tokens, as meshcheck and CG:SHOP tools
+/// read them; not every OFF reader does). Deleted elements skipped. Atomic. \throws IoError
+void write_off_exact(const Mesh& mesh, const std::string& path);
+
 struct CgshopSolution {
   std::string instance_uid;
   std::vector<Point2> steiner_points;        ///< mesh vertices that are not domain points, in vertex order
+  std::vector<std::array<std::string, 2>> steiner_exact;  ///< their exact coordinates (exact_coordinates)
   std::vector<std::array<int, 2>> edges;     ///< every mesh edge; index < n_points: domain point, else Steiner
   std::size_t n_points = 0;                  ///< domain points (the instance's points)
 };
