@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <utility>
 #include <limits>
 #include <set>
 #include <string>
@@ -101,6 +103,46 @@ TEST(CgshopSolution, written_solution_reads_back_to_the_mesh) {
   }
   EXPECT_EQ(edges.size(), m.n_edges()) << "no repeated edge";
   for (auto [a, b] : {std::pair{0, 1}, {1, 2}, {2, 3}, {0, 3}}) EXPECT_TRUE(edges.count({a, b})) << "boundary edge " << a << "-" << b;
+}
+
+__extension__ typedef __int128 Int128;
+
+/// "P/Q" or "P" as (P, Q); P and Q must fit 64 bits.
+std::pair<Int128, Int128> fraction(const std::string& s) {
+  const auto slash = s.find('/');
+  if (slash == std::string::npos) return {std::stoll(s), 1};
+  return {std::stoll(s.substr(0, slash)), static_cast<Int128>(std::stoull(s.substr(slash + 1)))};
+}
+
+TEST(CgshopSolution, exact_coordinates_put_segment_vertices_exactly_on_slanted_segments) {
+  Domain d;
+  d.points = {{0, 0}, {3, 1}, {0, 5}};
+  d.segments = {{0, 1}, {1, 2}, {2, 0}};
+  Mesh m = build_domain_cdt(d);
+  // a vertex on segment 0 at a rounded position (0.1 * (3, 1) is not exactly on the line)
+  EdgeHandle seg0;
+  for (auto eh : m.edges())
+    if (m.data(eh).segment == 0) seg0 = eh;
+  ASSERT_TRUE(seg0.is_valid());
+  const auto vh = m.add_vertex(Mesh::Point(0.3 * 1.0000000000000002, 0.1, 0));
+  m.split(seg0, vh);
+  m.data(vh).kind = VertexKind::OnSegment;
+  m.data(vh).segment = 0;
+  for (auto e : m.ve_range(vh))
+    if (m.is_boundary(e)) m.data(e).segment = 0;
+  const auto xy = io::exact_coordinates(m, vh);
+  const auto [px, qx] = fraction(xy[0]);
+  const auto [py, qy] = fraction(xy[1]);
+  // on the line y = x / 3 exactly: 3 * py / qy == px / qx
+  EXPECT_TRUE(3 * py * qx == px * qy) << xy[0] << ", " << xy[1];
+  EXPECT_NEAR(static_cast<double>(px) / static_cast<double>(qx), 0.3, 1e-12) << xy[0];
+  // a vertex not on a segment is written as its double
+  EXPECT_EQ(io::exact_coordinates(m, VertexHandle(1))[0], "3") << "input vertex";
+  const auto path = (std::filesystem::path(ACUTE_TEST_OUTPUT_DIR) / "slanted_exact.off").string();
+  io::write_off_exact(m, path);
+  std::ifstream in(path);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find(xy[0] + " " + xy[1]), std::string::npos) << path;
 }
 
 TEST(CgshopSolution, missing_input_point_is_an_error) {
