@@ -31,7 +31,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.normpath(os.path.join(HERE, "..", ".."))
 
 ALL_MESHERS = ["acute", "cgal20.7", "cgal-max", "cgal20.7+lloyd", "cgal-max+lloyd", "gmsh-front2d", "gmsh-del2d"]
-QUICK_DOMAINS = ["square", "disk", "A", "guitar", "superior", "nazca_monkey"]
+QUICK_DOMAINS = ["square", "disk", "A", "superior", "nazca_monkey"]
 # Initial guess of (edge-size parameter) / (equilateral edge for the target count), refined per domain.
 SIZE_FACTOR = {"cgal": 1.45, "gmsh": 1.0}
 LLOYD_ITERATIONS = 10
@@ -314,10 +314,10 @@ class Timeout(Exception):
 
 
 def timed(cmd, timeout, cwd=None):
-    """Run under /usr/bin/time: (wall seconds, peak RSS MB, returncode, stdout, stderr)."""
+    """Run under /usr/bin/time: (wall s, cpu s (user + sys), peak RSS MB, returncode, stdout, stderr)."""
     with tempfile.NamedTemporaryFile("r", suffix=".time", delete=False) as tf:
         tfile = tf.name
-    full = (["/usr/bin/time", "-f", "%M", "-o", tfile] if os.path.exists("/usr/bin/time") else []) + cmd
+    full = (["/usr/bin/time", "-f", "%M %U %S", "-o", tfile] if os.path.exists("/usr/bin/time") else []) + cmd
     t0 = time.perf_counter()
     try:
         p = subprocess.run(full, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=timeout, cwd=cwd, text=True)
@@ -325,14 +325,15 @@ def timed(cmd, timeout, cwd=None):
         os.unlink(tfile)
         raise Timeout()
     wall = time.perf_counter() - t0
-    rss = None
+    rss = cpu = None
     try:
         with open(tfile) as f:
-            nums = [l.strip() for l in f if l.strip().isdigit()]
-            rss = int(nums[-1]) / 1024.0 if nums else None
+            last = [l.split() for l in f if re.match(r"^\d+ [\d.]+ [\d.]+\s*$", l)]
+        if last:
+            rss, cpu = int(last[-1][0]) / 1024.0, float(last[-1][1]) + float(last[-1][2])
     finally:
         os.unlink(tfile)
-    return wall, rss, p.returncode, p.stdout, p.stderr
+    return wall, cpu, rss, p.returncode, p.stdout, p.stderr
 
 
 class Runner:
@@ -365,7 +366,7 @@ class Runner:
         cmd, produced = self.command(mesher, poly, out, n, h, angle)
         if os.path.exists(produced):
             os.unlink(produced)
-        wall, rss, rc, so, se = timed(cmd, timeout)
+        wall, cpu, rss, rc, so, se = timed(cmd, timeout)
         extra = {}
         if mesher == "acute":
             try:
@@ -387,7 +388,7 @@ class Runner:
             os.unlink(produced)
         else:
             nv = off_vertex_count(out)
-        return wall, rss, nv, extra
+        return wall, cpu, rss, nv, extra
 
     def run(self, mesher, domain, poly, n, area, angle=None, timeout=None):
         """Tuned (for peers) and repeated run. Returns a result dict (without the meshcheck part)."""
@@ -396,28 +397,38 @@ class Runner:
         out = self.out_path(domain, mesher, n)
         kind = "cgal" if mesher.startswith("cgal") else "gmsh" if mesher.startswith("gmsh") else "acute"
         h_eq = math.sqrt(2.0 * area / (math.sqrt(3.0) * n))
-        key = (domain, mesher)
-        fac = self.factor.get(key, SIZE_FACTOR.get(kind, 1.0))
+        # Lloyd moves vertices without adding any: it reuses the size tuned for the plain refinement.
+        base = mesher.replace("+lloyd", "")
+        tuned = self.factor.get((domain, base, n, angle)) if base != mesher else None
+        fac = tuned or self.factor.get((domain, base), SIZE_FACTOR.get(kind, 1.0))
         rec = {"domain": domain, "mesher": mesher, "target": n, "angle_bound": angle, "tuning_runs": 0}
-        times, rsss = [], []
+        times, cpus, rsss = [], [], []
         for attempt in range(a.max_tuning + 1):
             h = h_eq * fac
-            wall, rss, nv, extra = self.run_once(mesher, domain, poly, out, n, h, angle, timeout)
+            wall, cpu, rss, nv, extra = self.run_once(mesher, domain, poly, out, n, h, angle, timeout)
             rec["tuning_runs"] += 1
-            if kind == "acute" or abs(nv - n) <= a.tolerance_count * n or attempt == a.max_tuning:
+            hit = abs(nv - n) <= a.tolerance_count * n
+            if kind == "acute" or tuned or hit or attempt == a.max_tuning:
                 times.append(wall)
+                cpus.append(cpu)
                 rsss.append(rss)
                 break
-            # Vertex count ~ area / h^2, plus a boundary term ~ perimeter / h: a square-root update.
-            fac *= math.sqrt(max(nv, 1) / n) if nv > 0 else 0.5
-        self.factor[key] = fac
+            # Vertex count ~ area / h^2 (+ a boundary term): a square-root update, clamped (gmsh's
+            # count stops following h where the boundary spacing sets the size).
+            default = SIZE_FACTOR.get(kind, 1.0)
+            fac = min(4 * default, max(0.25 * default, fac * math.sqrt(max(nv, 1) / n)))
         if kind != "acute":
             rec["size_param"] = h
+            if hit:
+                self.factor[(domain, base)] = fac
+            self.factor[(domain, base, n, angle)] = fac
         for _ in range(a.reps - 1):
-            wall, rss, nv2, extra = self.run_once(mesher, domain, poly, out, n, h, angle, timeout)
+            wall, cpu, rss, nv2, extra = self.run_once(mesher, domain, poly, out, n, h, angle, timeout)
             times.append(wall)
+            cpus.append(cpu)
             rsss.append(rss)
-        rec.update({"time_s": statistics.median(times), "times_s": times,
+        known = [c for c in cpus if c is not None]
+        rec.update({"time_s": statistics.median(times), "times_s": times, "cpu_s": statistics.median(known) if known else None,
                     "peak_mb": max(r for r in rsss if r is not None) if any(r is not None for r in rsss) else None,
                     "extra": extra, "out": out})
         return rec
@@ -448,11 +459,11 @@ def fmt(v, spec="%.2f"):
     return "—" if v is None else spec % v
 
 
-def ratio_per_vertex(acute, peer):
+def ratio_per_vertex(acute, peer, key="time_s"):
     """(acute time per vertex) / (peer time per vertex): the time ratio at equal vertex count."""
     try:
-        ta = acute["time_s"] / acute["quality"]["n_vertices"]
-        tp = peer["time_s"] / peer["quality"]["n_vertices"]
+        ta = acute[key] / acute["quality"]["n_vertices"]
+        tp = peer[key] / peer["quality"]["n_vertices"]
         return ta / tp
     except (KeyError, TypeError, ZeroDivisionError):
         return None
@@ -466,9 +477,10 @@ def markdown(report):
          "acute: `%s` (%s). CGAL %s (`%s`). gmsh %s (`%s`). Referee: `%s --tolerance 1e-9`." % (
              meta["acute"], meta["acute_rev"], meta["cgal_version"], meta["cgal"], meta["gmsh_version"], meta["gmsh"],
              meta["meshcheck"]),
-         "Wall time of the whole process (read, mesh, write), median of %d; peak RSS from /usr/bin/time. Peers' size "
+         "Wall time of the whole process (read, mesh, write), median of %d (%d at >= 200k); cpu = user + sys; peak RSS "
+         "from /usr/bin/time. All meshers single-threaded, run one at a time. Peers' size "
          "parameter tuned to the target vertex count (±%d%%). acute/peer = (acute s per vertex) / (peer s per vertex)." % (
-             meta["reps"], round(100 * meta["tolerance_count"])),
+             meta["reps"], meta.get("big_reps", meta["reps"]), round(100 * meta["tolerance_count"])),
          "CGAL: Delaunay_mesh_size_criteria_2(B = sin²(angle), S), Lloyd = lloyd_optimize_mesh_2, %d iterations; "
          "cgal-max = largest of %s degrees that terminated. gmsh: -algo front2d|del2d, -smooth %d (Mesh.Optimize and "
          "-optimize_netgen act on tetrahedra only), -nt 1." % (LLOYD_ITERATIONS, meta["cgal_max_angles"], GMSH_SMOOTHING),
@@ -478,47 +490,54 @@ def markdown(report):
     L += ["## Summary", ""]
     L += summary(report)
     L += ["", "## Runs", "",
-          "| domain | target | mesher | valid | V | T | min∠ | free min∠ | max∠ | % >90 | % <30 | Q min | Q mean | time s | peak MB | acute/peer |",
-          "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+          "| domain | target | mesher | valid | V | T | min∠ | free min∠ | max∠ | % >90 | # =90 | % <30 | Q min | Q mean | wall s | cpu s | peak MB | acute/peer |",
+          "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for r in report["runs"]:
         name = r["mesher"] + (" (%g°)" % r["angle_bound"] if r.get("angle_bound") and "max" in r["mesher"] else "")
         if "error" in r:
-            L.append("| %s | %d | %s | %s |%s" % (r["domain"], r["target"], name, r["error"].replace("|", "/"), " |" * 12))
+            L.append("| %s | %d | %s | %s |%s" % (r["domain"], r["target"], name, r["error"].replace("|", "/"), " |" * 14))
             continue
         q, c = r.get("quality") or {}, r.get("check") or {}
         valid = "exact" if c.get("tiles_domain_exactly") else ("yes" if c.get("tiles_domain") else "**NO**")
-        L.append("| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        L.append("| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             r["domain"], r["target"], name, valid, fmt(q.get("n_vertices"), "%d"), fmt(q.get("n_triangles"), "%d"),
-            fmt(q.get("min_angle")), fmt(q.get("free_min_angle")), fmt(q.get("max_angle")), fmt(q.get("pct_obtuse")),
-            fmt(q.get("pct_below_min")), fmt(q.get("q_min"), "%.3f"), fmt(q.get("q_mean"), "%.3f"), fmt(r.get("time_s"), "%.3f"),
-            fmt(r.get("peak_mb"), "%.0f"), fmt(r.get("ratio"), "%.2f")))
+            fmt(q.get("min_angle")), fmt(q.get("free_min_angle")), fmt(q.get("max_angle"), "%.3f"), fmt(q.get("pct_obtuse")),
+            fmt(q.get("n_right"), "%d"), fmt(q.get("pct_below_min")), fmt(q.get("q_min"), "%.3f"), fmt(q.get("q_mean"), "%.3f"),
+            fmt(r.get("time_s"), "%.3f"), fmt(r.get("cpu_s"), "%.2f"), fmt(r.get("peak_mb"), "%.0f"), fmt(r.get("ratio"), "%.2f")))
     return "\n".join(L) + "\n"
+
+
+def geomean(xs):
+    return math.exp(statistics.mean(math.log(x) for x in xs)) if xs else None
 
 
 def summary(report):
     runs = [r for r in report["runs"] if "error" not in r and r.get("quality")]
     meshers = [m for m in report["meta"]["meshers"] if any(r["mesher"] == m for r in runs)]
     targets = sorted({r["target"] for r in runs})
-    L = ["Per mesher over all (domain, size) runs: runs that tile the domain; runs with no angle > 90° (obtuse "
-         "or right); runs whose free min angle is >= 30°; both goals; worst max angle; geometric mean of acute/peer "
-         "time ratio per target size.", "",
-         "| mesher | valid | 0 obtuse/right | free min ≥ 30 | both | worst max∠ | mean Q | %s |" % " | ".join(
-             "acute/peer @%s" % (("%dk" % (t // 1000)) if t >= 1000 else t) for t in targets),
-         "|---|---:|---:|---:|---:|---:|---:|%s" % ("---:|" * len(targets))]
+    L = ["Per mesher over its (domain, size) runs: runs that tile the domain; runs with no obtuse triangle; with no "
+         "obtuse or right one (every angle < 90°); runs whose free min angle is >= 30°; both goals (< 90° and free min "
+         ">= 30°); worst max angle; mean of Q mean; geometric mean over domains of the acute/peer time ratio at equal "
+         "vertex count, wall (cpu), per target size (> 1: acute slower).", "",
+         "| mesher | valid | 0 obtuse | all < 90° | free min ≥ 30° | both | worst max∠ | mean Q | %s |" % " | ".join(
+             "acute/peer @%s" % (("%dk" % (t // 1000)) if t >= 1000 else t) if t < 10**6 else "acute/peer @%dM" % (t // 10**6) for t in targets),
+         "|---|---:|---:|---:|---:|---:|---:|---:|%s" % ("---:|" * len(targets))]
     for m in meshers:
         rs = [r for r in runs if r["mesher"] == m]
         ok = [r for r in rs if r["check"].get("tiles_domain")]
-        nonobt = [r for r in rs if (r["quality"]["n_obtuse"] or 0) + (r["quality"]["n_right"] or 0) == 0]
+        nonobt = [r for r in rs if (r["quality"]["n_obtuse"] or 0) == 0]
+        acute = [r for r in nonobt if (r["quality"]["n_right"] or 0) == 0]
         free = [r for r in rs if (r["quality"].get("free_min_angle") or 0) >= 30 - 1e-9]
-        both = [r for r in rs if r in nonobt and r in free]
+        both = [r for r in acute if r in free]
         worst = max(r["quality"]["max_angle"] for r in rs)
         qmean = statistics.mean(r["quality"]["q_mean"] for r in rs)
         cells = []
         for t in targets:
-            rat = [r["ratio"] for r in rs if r["target"] == t and r.get("ratio")]
-            cells.append("%.2f (%d)" % (math.exp(statistics.mean(math.log(x) for x in rat)), len(rat)) if rat else "—")
-        L.append("| %s | %d/%d | %d | %d | %d | %.2f | %.3f | %s |" % (m, len(ok), len(rs), len(nonobt), len(free), len(both),
-                                                                   worst, qmean, " | ".join(cells)))
+            wall = geomean([r["ratio"] for r in rs if r["target"] == t and r.get("ratio")])
+            cpu = geomean([r["ratio_cpu"] for r in rs if r["target"] == t and r.get("ratio_cpu")])
+            cells.append("—" if wall is None else "%.2f (%s)" % (wall, fmt(cpu)))
+        L.append("| %s | %d/%d | %d | %d | %d | %d | %.3f | %.3f | %s |" % (
+            m, len(ok), len(rs), len(nonobt), len(acute), len(free), len(both), worst, qmean, " | ".join(cells)))
     return L
 
 
@@ -571,6 +590,8 @@ def main():
     ap.add_argument("--no-million", action="store_true")
     ap.add_argument("--meshers", default=",".join(ALL_MESHERS))
     ap.add_argument("--reps", type=int, help="repetitions (median time); default 1 quick, 3 full")
+    ap.add_argument("--big-reps", type=int, help="repetitions for targets >= 200k vertices (default: --reps)")
+    ap.add_argument("--name", help="base name of the .md/.json files (default: the mode)")
     ap.add_argument("--acute", help="acute binary (default build/bin/acute)")
     ap.add_argument("--cgal", help="cgal_mesh2 driver (default build*/bin/cgal_mesh2)")
     ap.add_argument("--gmsh", help="gmsh binary (default from PATH)")
@@ -581,10 +602,20 @@ def main():
     ap.add_argument("--max-tuning", type=int, default=3)
     ap.add_argument("--out", help="results folder (default results/compare/<date>)")
     ap.add_argument("--keep-meshes", action="store_true")
+    ap.add_argument("--render", metavar="JSON", help="only rewrite the Markdown next to a results JSON")
     a = ap.parse_args()
+    if a.render:
+        with open(a.render) as f:
+            report = json.load(f)
+        with open(os.path.splitext(a.render)[0] + ".md", "w") as f:
+            f.write(markdown(report))
+        return
 
     mode = "quick" if a.quick else "full"
+    name = a.name or mode
     a.reps = a.reps or (1 if a.quick else 3)
+    a.big_reps = a.big_reps or a.reps
+    base_reps = a.reps
     a.timeout = a.timeout or (120 if a.quick else 900)
     sizes = [int(s) for s in a.sizes.split(",")] if a.sizes else ([2000, 20000] if a.quick else [2000, 20000, 200000])
     million = (not a.quick or a.million) and not a.no_million
@@ -635,7 +666,7 @@ def main():
             "uname": " ".join(platform.uname()), "load_start": "%.2f" % os.getloadavg()[0], "acute": a.acute,
             "acute_rev": acute_rev, "cgal": a.cgal, "cgal_version": cgal_version(), "gmsh": a.gmsh,
             "gmsh_version": tool_version([a.gmsh, "--version"]) if a.gmsh else None, "meshcheck": a.meshcheck,
-            "reps": a.reps, "sizes": sizes, "million_on_square": million, "meshers": meshers,
+            "reps": a.reps, "big_reps": a.big_reps, "sizes": sizes, "million_on_square": million, "meshers": meshers,
             "tolerance_count": a.tolerance_count, "cgal_max_angles": a.cgal_max_angles, "skipped": skipped,
             "lloyd_iterations": LLOYD_ITERATIONS, "gmsh_smoothing": GMSH_SMOOTHING}
     report = {"meta": meta, "runs": []}
@@ -646,9 +677,9 @@ def main():
     def save():
         meta["load_end"] = "%.2f" % os.getloadavg()[0]
         meta["elapsed_s"] = round(time.perf_counter() - t_start, 1)
-        with open(os.path.join(out_dir, mode + ".json"), "w") as f:
+        with open(os.path.join(out_dir, name + ".json"), "w") as f:
             json.dump(report, f, indent=1)
-        with open(os.path.join(out_dir, mode + ".md"), "w") as f:
+        with open(os.path.join(out_dir, name + ".md"), "w") as f:
             f.write(markdown(report))
 
     for dname in names:
@@ -662,6 +693,7 @@ def main():
             report["runs"].append({"domain": dname, "mesher": "-", "target": 0, "error": str(e)[:160]})
             continue
         for n in dsizes:
+            a.reps = a.big_reps if n >= 200000 else base_reps
             results = {}
             for m in meshers:
                 angle = 20.7 if "20.7" in m else None
@@ -705,9 +737,10 @@ def main():
                 for m, r in results.items():
                     if m != "acute" and "error" not in r:
                         r["ratio"] = ratio_per_vertex(ac, r)
+                        r["ratio_cpu"] = ratio_per_vertex(ac, r, "cpu_s")
             save()
     save()
-    print("wrote %s/%s.md and .json (%.0f s)" % (out_dir, mode, time.perf_counter() - t_start))
+    print("wrote %s/%s.md and .json (%.0f s)" % (out_dir, name, time.perf_counter() - t_start))
 
 
 if __name__ == "__main__":
