@@ -319,9 +319,13 @@ def timed(cmd, timeout, cwd=None):
         tfile = tf.name
     full = (["/usr/bin/time", "-f", "%M %U %S", "-o", tfile] if os.path.exists("/usr/bin/time") else []) + cmd
     t0 = time.perf_counter()
+    # Own session, so that a timeout kills the mesher too, not only /usr/bin/time.
+    p = subprocess.Popen(full, stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=cwd, text=True, start_new_session=True)
     try:
-        p = subprocess.run(full, stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=timeout, cwd=cwd, text=True)
+        out, err = p.communicate(timeout=timeout)
     except subprocess.TimeoutExpired:
+        os.killpg(p.pid, 9)
+        p.communicate()
         os.unlink(tfile)
         raise Timeout()
     wall = time.perf_counter() - t0
@@ -333,7 +337,7 @@ def timed(cmd, timeout, cwd=None):
             rss, cpu = int(last[-1][0]) / 1024.0, float(last[-1][1]) + float(last[-1][2])
     finally:
         os.unlink(tfile)
-    return wall, cpu, rss, p.returncode, p.stdout, p.stderr
+    return wall, cpu, rss, p.returncode, out, err
 
 
 class Runner:
@@ -724,7 +728,7 @@ def main():
                         os.unlink(rec["out"])
                     rec.pop("out", None)
                 except Timeout:
-                    rec = {"domain": dname, "mesher": m, "target": n, "error": "timeout (%gs)" % a.timeout}
+                    rec = {"domain": dname, "mesher": m, "target": n, "error": "timeout (%g s)" % a.timeout}
                 except (RuntimeError, OSError, ValueError) as e:
                     rec = {"domain": dname, "mesher": m, "target": n, "error": str(e)[:160]}
                 results[m] = rec
