@@ -47,10 +47,19 @@ int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
   options.method = parse_method(args.method);
   options.cdt.crossing = args.split_crossings ? CrossingSegments::Split : CrossingSegments::Error;
   const bool tty = isatty(STDERR_FILENO) && !global.quiet;
-  if (tty)
-    options.observer = [](const MeshProgress& p) {
-      std::fprintf(stderr, "\r%-8s iteration %5d  bad %8zu", p.phase.c_str(), p.iteration, p.bad);
-      std::fflush(stderr);
+  auto last_phase = std::make_shared<std::string>();
+  if (tty || global.verbose)
+    options.observer = [tty, verbose = global.verbose, t0, last_phase](const MeshProgress& p) {
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (verbose && p.phase != *last_phase) {
+        std::fprintf(stderr, "%s[%8.3f s] phase %s\n", tty ? "\r" : "", t, p.phase.c_str());
+        *last_phase = p.phase;
+      }
+      if (verbose && !tty && p.phase == "repair") std::fprintf(stderr, "[%8.3f s] repair iteration %d: %zu bad\n", t, p.iteration, p.bad);
+      if (tty) {
+        std::fprintf(stderr, "\r%-8s iteration %5d  bad %8zu", p.phase.c_str(), p.iteration, p.bad);
+        std::fflush(stderr);
+      }
     };
   MeshResult result;
   try {

@@ -117,7 +117,7 @@ VertexHandle insert_point(Mesh& mesh, const Point2& p, FaceHandle start, EdgeHan
     }
     case LocationKind::OnEdge: {
       // An unconstrained boundary edge is a frozen border (e.g. of a region copy): never split it.
-      if (mesh.is_boundary(loc.edge) && !is_constrained(mesh, loc.edge)) {
+      if (mesh.data(loc.edge).frozen || (mesh.is_boundary(loc.edge) && !is_constrained(mesh, loc.edge))) {
         if (blocked_edge) *blocked_edge = loc.edge;
         return VertexHandle();
       }
@@ -130,6 +130,7 @@ VertexHandle insert_point(Mesh& mesh, const Point2& p, FaceHandle start, EdgeHan
 }
 
 VertexHandle split_edge(Mesh& mesh, EdgeHandle eh, const Point2& p_in) {
+  if (mesh.data(eh).frozen) return VertexHandle();
   Point2 p = p_in;
   const int seg = mesh.data(eh).segment;
   if (seg >= 0 && static_cast<std::size_t>(seg) < segment_table(mesh).size()) p = project_on_segment(mesh, seg, p_in);

@@ -98,6 +98,11 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       cp.graded = options.size <= 0;
       cp.gradation = options.gradation;
       cp.seed = options.seed;
+      if (options.method == Method::Acute) {
+        // The repair does not need a converged CVT, only well-spread vertices: a short optimisation.
+        cp.lbfgs_iterations = 40;
+        cp.move_tolerance = 3e-3;
+      }
       if (options.observer)
         cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy}); };
       try {

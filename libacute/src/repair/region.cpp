@@ -27,15 +27,17 @@ bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const st
     for (auto fh : faces)
       for (auto vh : big.fv_range(fh)) {
         if (is_movable[static_cast<std::size_t>(vh.idx())]) continue;
-        int transitions = 0;
+        // Once the region's faces are removed, vh must keep a single gap in its fan (gaps of the
+        // mesh boundary count too), or re-adding faces would meet a complex vertex.
+        int gaps = 0;
         for (auto heh : big.voh_range(vh)) {
           const FaceHandle a = big.face_handle(heh);
-          const FaceHandle b = big.face_handle(big.opposite_halfedge_handle(heh));
-          const bool ia = a.is_valid() && in_region[static_cast<std::size_t>(a.idx())];
-          const bool ib = b.is_valid() && in_region[static_cast<std::size_t>(b.idx())];
-          transitions += ia != ib;
+          const FaceHandle b = big.face_handle(big.opposite_halfedge_handle(heh));  // the neighbour around vh
+          const bool missing_a = !a.is_valid() || in_region[static_cast<std::size_t>(a.idx())];
+          const bool missing_b = !b.is_valid() || in_region[static_cast<std::size_t>(b.idx())];
+          gaps += missing_a && !missing_b;
         }
-        if (transitions > 2) {
+        if (gaps > 1) {
           is_movable[static_cast<std::size_t>(vh.idx())] = 1;
           absorb.push_back(vh);
         }
@@ -47,6 +49,17 @@ bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const st
     }
   }
   if (faces.empty()) return false;
+  for (auto fh : faces)
+    for (auto vh : big.fv_range(fh)) {
+      if (is_movable[static_cast<std::size_t>(vh.idx())]) continue;
+      int gaps = 0;
+      for (auto heh : big.voh_range(vh)) {
+        const FaceHandle a = big.face_handle(heh);
+        const FaceHandle b = big.face_handle(big.opposite_halfedge_handle(heh));
+        gaps += (!a.is_valid() || in_region[static_cast<std::size_t>(a.idx())]) && !(!b.is_valid() || in_region[static_cast<std::size_t>(b.idx())]);
+      }
+      if (gaps > 1) return false;  // could not be absorbed in a few passes: leave this cluster alone
+    }
 
   region = Region{};
   Mesh& sub = region.sub;
@@ -74,7 +87,10 @@ bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const st
     for (auto heh : big.fh_range(fh)) {
       const auto sh = sub.find_halfedge(to_sub[static_cast<std::size_t>(big.from_vertex_handle(heh).idx())],
                                         to_sub[static_cast<std::size_t>(big.to_vertex_handle(heh).idx())]);
-      sub.data(sub.edge_handle(sh)) = big.data(big.edge_handle(heh));
+      const EdgeHandle se = sub.edge_handle(sh);
+      sub.data(se) = big.data(big.edge_handle(heh));
+      // A border of the copy that is not a border of the mesh is shared with faces outside it.
+      sub.data(se).frozen = sub.is_boundary(se) && !big.is_boundary(big.edge_handle(heh));
     }
   set_segment_table(sub, segment_table(big));
   region.big_faces = std::move(faces);
@@ -109,7 +125,10 @@ std::vector<VertexHandle> commit_region(Mesh& big, const Region& region, const M
     const auto h = sub.halfedge_handle(eh, 0);
     const auto bh = big.find_halfedge(to_big[static_cast<std::size_t>(sub.from_vertex_handle(h).idx())],
                                       to_big[static_cast<std::size_t>(sub.to_vertex_handle(h).idx())]);
-    if (bh.is_valid()) big.data(big.edge_handle(bh)) = sub.data(eh);
+    if (bh.is_valid()) {
+      big.data(big.edge_handle(bh)) = sub.data(eh);
+      big.data(big.edge_handle(bh)).frozen = false;
+    }
   }
   return created;
 }

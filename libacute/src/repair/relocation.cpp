@@ -100,9 +100,9 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   static const double kDirs[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {0.7071067811865476, 0.7071067811865476},
                                      {-0.7071067811865476, 0.7071067811865476}, {0.7071067811865476, -0.7071067811865476},
                                      {-0.7071067811865476, -0.7071067811865476}};
-  double step = 0.25 * mean_edge;
-  const double min_step = 1e-4 * mean_edge;
-  for (int it = 0; it < 60 && step > min_step; ++it) {
+  double step = 0.2 * mean_edge;
+  const double min_step = 1e-3 * mean_edge;
+  for (int it = 0; it < 30 && step > min_step; ++it) {
     bool improved = false;
     if (on_segment) {
       improved = consider(best_p + step * axis) || consider(best_p - step * axis);

@@ -149,8 +149,8 @@ class Repairer {
       // Global phase: relocate every vertex whose star is near the bounds, over the whole mesh.
       std::vector<VertexHandle> near;
       for (auto vh : mesh_.vertices())
-        if (!is_input(mesh_, vh) && star_margin(mesh_, vh, bounds_, forced_) < 8.0) near.push_back(vh);
-      smooth(near, 2);
+        if (!is_input(mesh_, vh) && star_margin(mesh_, vh, bounds_, forced_) < 4.0) near.push_back(vh);
+      smooth(near, 1);
     }
     // Local phase: each cluster's neighbourhood is copied, candidate operations are tried on the
     // copy, and the best one is written back when it improves the region.
@@ -176,8 +176,19 @@ class Repairer {
       Score best_score = base;
       search(region, stuck_ > 2, best, best_score);
       if (best_score < base) {
+        if (paranoid_) {
+          auto area = [](const Mesh& m) { double a = 0; for (auto fh : m.faces()) { const auto p = face_points(m, fh); a += signed_area2(p[0], p[1], p[2]); } return a; };
+          const double a0 = area(region.sub), a1 = area(best);
+          if (std::abs(a0 - a1) > 1e-9 * std::abs(a0))
+            throw InternalError("repair: candidate " + std::to_string(best_candidate_) + " changed the region area " + std::to_string(a0) + " -> " + std::to_string(a1));
+        }
         detail::commit_region(mesh_, region, best);
         if (paranoid_) {
+          double total = 0;
+          for (auto fh : mesh_.faces()) { const auto p = face_points(mesh_, fh); total += signed_area2(p[0], p[1], p[2]); }
+          if (paranoid_area_ == 0) paranoid_area_ = total;
+          if (std::abs(total - paranoid_area_) > 1e-9 * paranoid_area_)
+            throw InternalError("repair: a cluster edit changed the mesh area (candidate " + std::to_string(best_candidate_) + ")");
           const std::string sub_problem = detail::constraint_violation(best);
           const std::string problem = detail::constraint_violation(mesh_);
           if (!problem.empty()) throw InternalError("repair: after a cluster edit: " + problem + " (region copy: " + sub_problem + ")");
@@ -217,7 +228,8 @@ class Repairer {
   /// A vertex on an unconstrained boundary edge: the frozen border of a region copy (its star is partial).
   static bool on_frozen_border(const Mesh& sub, VertexHandle vh) {
     for (auto heh : sub.voh_range(vh))
-      if (sub.is_boundary(sub.edge_handle(heh)) && !is_constrained(sub, sub.edge_handle(heh))) return true;
+      if (sub.data(sub.edge_handle(heh)).frozen || (sub.is_boundary(sub.edge_handle(heh)) && !is_constrained(sub, sub.edge_handle(heh))))
+        return true;
     return false;
   }
 
@@ -291,7 +303,7 @@ class Repairer {
     std::vector<Outcome> level1;
     expand(region.sub, region.forced, level1);
     for (auto& o : level1)
-      if (o.score < best_score) best_score = o.score, best = o.mesh;
+      if (o.score < best_score) best_score = o.score, best = o.mesh, best_candidate_ = o.candidate;
     if (!deep || best_score < score(region.sub, region.forced)) return;
     std::sort(level1.begin(), level1.end(), [](const Outcome& a, const Outcome& b) { return a.score < b.score; });
     if (level1.size() > 4) level1.resize(4);
@@ -299,13 +311,14 @@ class Repairer {
       std::vector<Outcome> level2;
       expand(first.mesh, region.forced, level2);
       for (auto& o : level2)
-        if (o.score < best_score) best_score = o.score, best = std::move(o.mesh);
+        if (o.score < best_score) best_score = o.score, best = std::move(o.mesh), best_candidate_ = 100 * first.candidate + o.candidate;
     }
   }
 
   struct Outcome {
     Score score;
     Mesh mesh;
+    int candidate = 0;
   };
 
   /// Applies each candidate operation to a copy of sub0 (then relocation) and collects the results.
@@ -324,9 +337,10 @@ class Repairer {
       smooth_sub(sub, forced, 3);
       const Score s = score(sub, forced);
       if (trace_) std::fprintf(stderr, "    candidate %d: bad %zu worst %.4f\n", candidate_, s.bad, s.worst);
-      out.push_back(Outcome{s, std::move(sub)});
+      out.push_back(Outcome{s, std::move(sub), candidate_});
     };
     attempt([](Mesh&) { return true; });  // smoothing alone
+    if (out.back().score.bad == 0 && out.back().score.infeasible == 0) return;  // enough: most clusters end here
 
     // The worst face of the region drives the topological candidates.
     FaceHandle worst;
@@ -418,6 +432,8 @@ class Repairer {
   std::vector<bool> forced_;
   std::vector<EdgeHandle> queue_;
   int candidate_ = 0;
+  int best_candidate_ = 0;
+  double paranoid_area_ = 0;
   std::chrono::steady_clock::time_point t0_;
   int stuck_ = 0;
   bool trace_ = std::getenv("ACUTE_TRACE") != nullptr;

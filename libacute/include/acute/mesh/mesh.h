@@ -40,6 +40,7 @@ struct MeshTraits : OpenMesh::DefaultTraits {
    public:
     int segment = -1;  ///< id of the input segment this edge is part of; -1 when unconstrained
     int marker = 0;    ///< boundary marker of that segment
+    bool frozen = false;  ///< border of a local copy of a mesh region: never split there
   };
 };
 

@@ -20,7 +20,7 @@ struct RepairProgress {
 struct RepairParams {
   AngleBounds bounds;
   int max_iterations = 300;
-  int global_iterations = 20;      ///< sweeps over the whole mesh before going local
+  int global_iterations = 5;      ///< sweeps over the whole mesh before going local
   std::size_t max_vertices = 50'000'000;
   double time_limit_s = 0;         ///< 0: none
   std::function<void(const RepairProgress&)> observer;
