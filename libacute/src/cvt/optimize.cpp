@@ -9,6 +9,7 @@
 #include <LBFGSpp/BFGSMat.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -245,7 +246,11 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
     opt.apply(target);
     opt.evaluate();
   };
-  for (int k = 0; k < params.lloyd_iterations; ++k) {
+  const auto start = std::chrono::steady_clock::now();
+  auto out_of_time = [&] {
+    return params.time_limit_s > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > params.time_limit_s;
+  };
+  for (int k = 0; k < params.lloyd_iterations && !out_of_time(); ++k) {
     const double before = opt.energy();
     lloyd_step();
     ++iteration;
@@ -263,7 +268,7 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
   bfgs.reset(n, std::max(1, params.lbfgs_memory));
   Eigen::VectorXd s, gz, dz(n), x0, g0, zstep, y;
   opt.scaling(s);
-  for (int k = 0; k < params.lbfgs_iterations; ++k) {
+  for (int k = 0; k < params.lbfgs_iterations && !out_of_time(); ++k) {
     opt.get_x(x0);
     g0 = opt.gradient();
     const double f0 = opt.energy();
@@ -329,6 +334,7 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   op.lloyd_iterations = params.lloyd_iterations;
   op.lbfgs_iterations = params.lbfgs_iterations;
   op.move_tolerance = params.move_tolerance;
+  op.time_limit_s = params.time_limit_s;
   op.observer = params.observer;
   out.optimization = cvt_optimize(out.mesh, out.size_field, op);
   out.iterations = out.optimization.lloyd_iterations + out.optimization.lbfgs_iterations;

@@ -98,6 +98,8 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       cp.graded = options.size <= 0;
       cp.gradation = options.gradation;
       cp.seed = options.seed;
+      // Share a time limit between the CVT (at most half) and the repair.
+      if (options.time_limit_s > 0) cp.time_limit_s = 0.5 * options.time_limit_s;
       if (options.method == Method::Acute) {
         // The repair does not need a converged CVT, only well-spread vertices: a short optimisation.
         cp.lbfgs_iterations = 40;

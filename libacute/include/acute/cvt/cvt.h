@@ -39,6 +39,7 @@ struct CvtOptimizeParams {
   /// Vertices allowed to move (Input vertices are ignored); empty: every non-input vertex. With a
   /// subset, the energy is taken over the faces around it only (local smoothing).
   std::vector<VertexHandle> subset;
+  double time_limit_s = 0;         ///< > 0: stop after this many seconds (not converged)
   std::function<void(const CvtProgress&)> observer;
 };
 
@@ -73,6 +74,7 @@ struct CvtParams {
   int lbfgs_iterations = 200;
   double move_tolerance = 1e-3;     ///< rms |v - c_v| / h(v) to stop at
   unsigned seed = 1;
+  double time_limit_s = 0;         ///< > 0: optimisation stops after this many seconds
   std::function<void(const CvtProgress&)> observer;
 };
 
