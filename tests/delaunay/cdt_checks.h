@@ -50,6 +50,20 @@ inline bool blocks(const Point2& p, const Point2& q, const Point2& a, const Poin
   return false;
 }
 
+// A face around vertex v whose angle at v strictly contains the direction to q, or -1.
+inline int face_entered(const Mesh& mesh, int v, const Point2& q) {
+  const auto vh = Mesh::VertexHandle(v);
+  const Point2 pv = acute::point2(mesh, vh);
+  for (auto heh : mesh.voh_range(vh)) {
+    const auto fh = mesh.face_handle(heh);
+    if (!fh.is_valid()) continue;
+    const Point2 x = acute::point2(mesh, mesh.to_vertex_handle(heh));
+    const Point2 y = acute::point2(mesh, mesh.to_vertex_handle(mesh.next_halfedge_handle(heh)));
+    if (pr::orient2d(pv, x, q) == Sign::Positive && pr::orient2d(pv, y, q) == Sign::Negative) return fh.idx();
+  }
+  return -1;
+}
+
 /// Returns violations (empty when the mesh is a valid CDT of the domain).
 inline std::vector<std::string> verify_cdt(const Mesh& mesh, const Domain& domain, const VerifyOptions& opt = {}) {
   std::vector<std::string> bad;
@@ -144,9 +158,12 @@ inline std::vector<std::string> verify_cdt(const Mesh& mesh, const Domain& domai
         break;
       }
       if (next < 0) {
-        // Allowed only when the segment has no domain on this side (dropped part); report if its id is used.
+        // Allowed only when the segment has no domain there (dropped): report if its id is used, or
+        // if the segment leaves cur through the inside of a mesh triangle.
         if (ids_present.count(static_cast<int>(s)))
           report("segment " + std::to_string(s) + ": chain broken at vertex " + std::to_string(cur));
+        else if (const int f = face_entered(mesh, cur, pb); f >= 0)
+          report("segment " + std::to_string(s) + ": missing, leaves vertex " + std::to_string(cur) + " through face " + std::to_string(f));
         ok = false;
       }
       cur = next;

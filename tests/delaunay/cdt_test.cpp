@@ -304,6 +304,31 @@ TEST(Cdt, holes_nested_loops_and_dangling_segments) {
   EXPECT_EQ(dangling, 1) << d.name;
 }
 
+// Reduced from debug2.poly sampled on its segments: the last segment crosses every triangle
+// around vertex 3 without touching it, so the constrained edge 3-4 lay inside the cavity (a spike
+// of its left chain) and lost its label; build_cdt returned without segment 0.
+TEST(Cdt, regression_constrained_edge_inside_cavity_kept) {
+  const fs::path file = fs::path(ACUTE_TEST_DATA_DIR) / "regressions" / "cdt_dropped_segment.poly";
+  Domain d = acute::io::read_domain(file.string());
+  d.name = file.filename().string();
+  d.convex_hull = true;
+  const Mesh m = checked_cdt(d, {true, -1, true});
+  std::vector<int> edges(d.segments.size(), 0);
+  for (auto eh : m.edges())
+    if (acute::is_constrained(m, eh)) ++edges[static_cast<std::size_t>(m.data(eh).segment)];
+  for (std::size_t s = 0; s < d.segments.size(); ++s) EXPECT_EQ(edges[s], 1) << d.name << " segment " << s;
+  // The same at the engine level, after each segment.
+  acute::detail::Triangulation tr(d.points);
+  ASSERT_TRUE(tr.insert_points(acute::detail::brio_hilbert_order(d.points))) << d.name;
+  for (std::size_t s = 0; s < d.segments.size(); ++s) {
+    tr.insert_segment(tr.rep(d.segments[s][0]), tr.rep(d.segments[s][1]), static_cast<int>(s));
+    EXPECT_EQ(tr.validate(), "") << d.name << " after segment " << s;
+    for (std::size_t r = 0; r <= s; ++r)
+      EXPECT_EQ(tr.find_missing_segment(tr.rep(d.segments[r][0]), tr.rep(d.segments[r][1])), -1)
+          << d.name << " segment " << r << " after inserting segment " << s;
+  }
+}
+
 TEST(Cdt, convex_hull_mode_like_triangle_c) {
   Domain d;
   d.name = "box (-c)";

@@ -71,6 +71,20 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
       throw InvalidInput(where + ": " + e.what());
     }
   }
+  // Post-condition: every segment is a chain of constrained edges (cheap: the degrees along the
+  // chains). Segments split at rounded crossing points are not on their input line any more.
+  {
+    std::vector<char> split(domain.segments.size(), 0);
+    for (int s : tr.split_segment_ids) split[static_cast<std::size_t>(s)] = 1;
+    for (std::size_t s = 0; s < domain.segments.size(); ++s) {
+      const int a = tr.rep(domain.segments[s][0]), b = tr.rep(domain.segments[s][1]);
+      if (a == b || split[s]) continue;
+      const int at = tr.find_missing_segment(a, b);
+      if (at >= 0)
+        throw InternalError(where + ": build_cdt lost segment " + std::to_string(s) + " " + point_text(tr.point(a)) + "-" +
+                            point_text(tr.point(b)) + " at " + point_text(tr.point(at)));
+    }
+  }
   stats.points_on_segments = tr.points_on_segments;
   stats.crossings_split = tr.crossings_split;
 

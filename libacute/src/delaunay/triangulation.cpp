@@ -325,6 +325,8 @@ void Triangulation::insert_segment(int a, int b, int seg) {
         const Point2 x = pa + s * d;
         set_segment_both(cur, ei, -1);
         ++crossings_split;
+        split_segment_ids.push_back(s2);
+        split_segment_ids.push_back(seg);
         const int xv = insert_new_point(x);
         insert_segment(u, xv, s2);
         insert_segment(xv, w, s2);
@@ -394,12 +396,25 @@ void Triangulation::triangulate_chain(int p0, int q0, int lo0, int hi0) {
 void Triangulation::retriangulate(int a, int end, int seg) {
   const unsigned stamp = ++stamp_counter_;
   for (int t : crossed_) stamp_[static_cast<std::size_t>(t)] = stamp;
+  auto key_of = [](int x, int y) {
+    const auto lo = static_cast<std::uint32_t>(std::min(x, y)), hi = static_cast<std::uint32_t>(std::max(x, y));
+    return (static_cast<std::uint64_t>(lo) << 32) | hi;
+  };
   boundary_.clear();
+  inner_segments_.clear();
   for (int t : crossed_) {
     const Tri& tr = tris_[static_cast<std::size_t>(t)];
     for (int i = 0; i < 3; ++i) {
       const int nb = tr.n[i];
-      if (stamp_[static_cast<std::size_t>(nb)] == stamp) continue;
+      if (stamp_[static_cast<std::size_t>(nb)] == stamp) {
+        // A constrained edge with crossed triangles on both sides is not crossed (that throws or
+        // splits): both its ends lie on one side of the segment, the chain on that side goes out
+        // along it and back (a spike), and the re-triangulation of the chain keeps it as an edge.
+        // It is seen from both sides; the label is restored below.
+        const int s = seg_[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(i)];
+        if (s >= 0 && t < nb) inner_segments_.emplace_back(key_of(tr.v[next3(i)], tr.v[prev3(i)]), s);
+        continue;
+      }
       boundary_.push_back(BoundaryEdge{tr.v[next3(i)], tr.v[prev3(i)], nb, index_in(nb, t),
                                        seg_[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(i)]});
     }
@@ -413,10 +428,6 @@ void Triangulation::retriangulate(int a, int end, int seg) {
   ACUTE_ASSERT(slot_pos_ == crossed_.size());
 
   recs_.clear();
-  auto key_of = [](int x, int y) {
-    const auto lo = static_cast<std::uint32_t>(std::min(x, y)), hi = static_cast<std::uint32_t>(std::max(x, y));
-    return (static_cast<std::uint64_t>(lo) << 32) | hi;
-  };
   for (int t : new_tris_) {
     const Tri& tr = tris_[static_cast<std::size_t>(t)];
     for (int i = 0; i < 3; ++i) recs_.push_back(EdgeRec{key_of(tr.v[next3(i)], tr.v[prev3(i)]), t, i, -1});
@@ -436,15 +447,51 @@ void Triangulation::retriangulate(int a, int end, int seg) {
       s = boundary_[static_cast<std::size_t>(r2.boundary)].seg;
     } else if (r1.key == key_of(a, end)) {
       s = seg;
+    } else {
+      for (auto& inner : inner_segments_)
+        if (inner.first == r1.key) {
+          s = inner.second;
+          inner.second = -1;  // found
+        }
     }
     seg_[3 * static_cast<std::size_t>(r1.t) + static_cast<std::size_t>(r1.i)] = s;
     if (r2.boundary < 0) seg_[3 * static_cast<std::size_t>(r2.t) + static_cast<std::size_t>(r2.i)] = s;
   }
+  for (const auto& inner : inner_segments_)
+    if (inner.second >= 0)
+      throw InternalError("inserting segment " + std::to_string(seg) + ": the constrained edge " + std::to_string(inner.first >> 32) + "-" +
+                          std::to_string(inner.first & 0xFFFFFFFFu) + " of segment " + std::to_string(inner.second) +
+                          " inside its cavity was not rebuilt");
   for (int t : new_tris_) {
     const Tri& tr = tris_[static_cast<std::size_t>(t)];
     for (int k = 0; k < 3; ++k) vtri_[static_cast<std::size_t>(tr.v[k])] = t;
   }
   last_ = new_tris_.front();
+}
+
+int Triangulation::find_missing_segment(int a, int b) const {
+  const Point2 pb = point(b);
+  int cur = a;
+  for (int steps = 0; cur != b; ++steps) {
+    const int start = vtri_[static_cast<std::size_t>(cur)];
+    if (start < 0 || steps > num_vertices()) return cur;
+    const Point2 pc = point(cur);
+    int t = start, next = -1;
+    do {
+      const Tri& tr = tris_[static_cast<std::size_t>(t)];
+      const int i = tr.v[0] == cur ? 0 : (tr.v[1] == cur ? 1 : 2);
+      const int u = tr.v[next3(i)];  // edge prev3(i) joins cur and u
+      if (u != infinite_ && seg_[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(prev3(i))] >= 0 &&
+          (u == b || (orient2d(pc, pb, point(u)) == Sign::Zero && on_ray(pc, pb, point(u))))) {
+        next = u;
+        break;
+      }
+      t = tr.n[next3(i)];
+    } while (t != start);
+    if (next < 0) return cur;
+    cur = next;
+  }
+  return -1;
 }
 
 std::string Triangulation::validate() const {

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace acute::detail {
@@ -44,7 +45,13 @@ class Triangulation {
   /// both segment ids, or (split_crossings) inserts the rounded intersection point.
   void insert_segment(int a, int b, int seg);
 
+  /// -1 when the segment between vertices a and b is a chain of constrained edges (any labels);
+  /// otherwise the vertex where the chain from a breaks. Linear in the degrees along the chain.
+  /// Exact: only for segments not split at rounded crossing points.
+  int find_missing_segment(int a, int b) const;
+
   bool split_crossings = false;
+  std::vector<int> split_segment_ids;  ///< segments split at a rounded crossing point (may repeat)
   std::size_t points_on_segments = 0;  ///< vertices found in a segment's interior
   std::size_t crossings_split = 0;
 
@@ -110,6 +117,7 @@ class Triangulation {
 
   // Scratch, reused across operations (no allocation in hot loops).
   std::vector<int> cavity_, stack_, link_, crossed_, left_, right_, chain_, new_tris_;
+  std::vector<std::pair<std::uint64_t, int>> inner_segments_;  // constrained edges inside a cavity
   std::vector<BoundaryEdge> boundary_;
   std::vector<EdgeRec> recs_;
   std::vector<std::array<int, 3>> split_edges_;
