@@ -210,7 +210,13 @@ std::size_t prune_steiner(Mesh& mesh, const AngleBounds& bounds, const RepairMes
       if ((o.cancel && o.cancel()) || std::chrono::steady_clock::now() > deadline) return removed;
       if (can_remove_vertex(mesh, vh) != OpVerdict::Ok) continue;
       Mesh before = mesh;
-      if (remove_vertex(mesh, vh) && meets_required_bounds(mesh, bounds, o.allow_right)) {
+      bool removed_ok = false;
+      try {  // a refused or failed removal leaves the copy in place
+        removed_ok = remove_vertex(mesh, vh) && meets_required_bounds(mesh, bounds, o.allow_right);
+      } catch (const Error&) {
+        removed_ok = false;
+      }
+      if (removed_ok) {
         ++removed;
         progress = true;
       } else {
