@@ -205,10 +205,11 @@ class Repairer {
   struct Score {
     std::size_t infeasible = 0;
     std::size_t bad = 0;
+    double badness = 0;  ///< sum over bad triangles of 1 + violation / 5 degrees: severity counts too
     double worst = INFINITY;
     bool operator<(const Score& o) const {
       if (infeasible != o.infeasible) return infeasible < o.infeasible;
-      if (bad != o.bad) return bad < o.bad;
+      if (std::abs(badness - o.badness) > 1e-9) return badness < o.badness;
       return worst > o.worst + 1e-9;
     }
   };
@@ -218,7 +219,10 @@ class Repairer {
     for (auto fh : sub.faces()) {
       const double m = triangle_margin(sub, fh, bounds_, face_is_exempt(sub, fh, forced));
       s.worst = std::min(s.worst, m);
-      s.bad += m < bounds_.margin_deg;
+      if (m < bounds_.margin_deg) {
+        ++s.bad;
+        s.badness += 1.0 + (bounds_.margin_deg - m) / 5.0;
+      }
     }
     for (auto vh : sub.vertices())
       if (!sub.status(vh).deleted() && !on_frozen_border(sub, vh)) s.infeasible += infeasible_sectors(sub, vh);
