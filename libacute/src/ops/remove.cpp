@@ -4,6 +4,7 @@
 #include <acute/ops/delaunay_flips.h>
 #include <acute/predicates/predicates.h>
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -71,6 +72,11 @@ struct RemovalPlan {
 bool plan_removal(const Mesh& mesh, VertexHandle vh, RemovalPlan& plan) {
   std::vector<VertexHandle> ring = star_ring(mesh, vh);
   const bool boundary = mesh.is_boundary(vh);
+  {  // a vertex seen twice around vh (a pinched star) has no simple polygon to fill
+    std::vector<VertexHandle> sorted = ring;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+  }
   // Constrained spokes: none (free vertex) or exactly two on the same segment.
   std::vector<std::size_t> constrained;
   for (std::size_t i = 0; i < ring.size(); ++i) {
@@ -127,8 +133,14 @@ bool remove_vertex(Mesh& mesh, VertexHandle vh) {
     if (!fh.is_valid()) throw InternalError("remove_vertex: re-triangulation rejected by the mesh");
     for (auto eh : mesh.fe_range(fh)) queue.push_back(eh);
   }
-  for (const auto& [ends, data] : ring_edges) mesh.data(mesh.edge_handle(mesh.find_halfedge(ends[0], ends[1]))) = data;
-  if (plan.u.is_valid()) mesh.data(mesh.edge_handle(mesh.find_halfedge(plan.u, plan.w))) = plan.segment_data;
+  for (const auto& [ends, data] : ring_edges) {
+    const auto heh = mesh.find_halfedge(ends[0], ends[1]);
+    if (heh.is_valid()) mesh.data(mesh.edge_handle(heh)) = data;
+  }
+  if (plan.u.is_valid()) {
+    const auto heh = mesh.find_halfedge(plan.u, plan.w);
+    if (heh.is_valid()) mesh.data(mesh.edge_handle(heh)) = plan.segment_data;
+  }
   restore_delaunay(mesh, queue);
   return true;
 }
