@@ -4,6 +4,8 @@
 #include <acute/core/errors.h>
 #include <acute/io/io.h>
 
+#include <algorithm>
+
 namespace acute::io {
 
 namespace detail {
@@ -11,9 +13,11 @@ namespace detail {
 NodeList read_node_lines(LineReader& in, long long count, long long n_attributes, long long n_markers,
                          const WarningSink& warn) {
   NodeList nodes;
-  nodes.points.reserve(static_cast<std::size_t>(count));
-  nodes.markers.reserve(static_cast<std::size_t>(count));
-  nodes.lines.reserve(static_cast<std::size_t>(count));
+  // Counts come from the file: reserve at most a bounded amount (a bogus header must not exhaust memory).
+  const auto cap = std::min<std::size_t>(static_cast<std::size_t>(count), std::size_t{1} << 20);
+  nodes.points.reserve(cap);
+  nodes.markers.reserve(cap);
+  nodes.lines.reserve(cap);
   bool warned_numbering = false;
   for (long long i = 0; i < count; ++i) {
     if (!in.next())
@@ -101,7 +105,7 @@ Domain read_poly(const std::string& path, const WarningSink& warn) {
   const long long n_segments = in.to_int(0, "segment count");
   const long long seg_markers = in.size() > 1 ? in.to_int(1, "number of segment markers") : 0;
   if (n_segments < 0) in.fail("segment count is negative");
-  domain.segments.reserve(static_cast<std::size_t>(n_segments));
+  domain.segments.reserve(std::min<std::size_t>(static_cast<std::size_t>(n_segments), std::size_t{1} << 20));
   for (long long i = 0; i < n_segments; ++i) {
     if (!in.next())
       in.fail("expected " + std::to_string(n_segments) + " segments, file ends after " + std::to_string(i));
