@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace acute {
 
@@ -145,6 +146,10 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       break;
     }
   }
+  if (options.target_vertices > 0 && result.mesh.n_vertices() > options.target_vertices + options.target_vertices / 10)
+    result.notes.push_back("the mesh has " + std::to_string(result.mesh.n_vertices()) + " vertices for the " +
+                           std::to_string(options.target_vertices) +
+                           " requested: the domain's small features need a finer size than the request gives");
   return result;
 }
 
