@@ -104,6 +104,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       if (options.method == Method::Acute) {
         // The repair does not need a converged CVT, only well-spread vertices: a short optimisation.
         cp.lbfgs_iterations = 40;
+        cp.lfs_factor = 0.7;  // room for interior vertices in strips between input points
         cp.move_tolerance = 3e-3;
       }
       if (options.observer)

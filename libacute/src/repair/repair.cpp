@@ -64,7 +64,7 @@ class Repairer {
         result_.status = RepairStatus::Converged;
         break;
       }
-      if (it >= params_.max_iterations || stagnation > 40) {
+      if (it >= params_.max_iterations || stagnation > 60) {
         result_.status = RepairStatus::IterationLimit;
         break;
       }
@@ -154,7 +154,7 @@ class Repairer {
     }
     // Local phase: each cluster's neighbourhood is copied, candidate operations are tried on the
     // copy, and the best one is written back when it improves the region.
-    const int rings = 1 + it % 3;
+    const int rings = 1 + it % 4;
     for (const auto& c : clusters) {
       if (out_of_time()) break;
       bool stale = false;
