@@ -1,3 +1,4 @@
+#include <acute/io/io.h>
 #include <acute/mesh/check.h>
 #include <acute/mesher.h>
 #include <acute/repair/repair.h>
@@ -99,6 +100,25 @@ TEST(Repair, never_fails_the_budget_contract) {
   EXPECT_MESH_VALID(result.mesh);
   EXPECT_EQ(detail::constraint_violation(result.mesh), "");
   if (result.status != MeshStatus::Ok) EXPECT_FALSE(result.remaining.empty());
+}
+
+}  // namespace
+}  // namespace acute
+
+namespace acute {
+namespace {
+
+// Regression (stress seed, issue 9): two triangles touching at one vertex; region copies around the
+// pinch used to re-add faces at a complex vertex and leave an invalid mesh.
+TEST(Repair, regression_pinch_vertex_domain_stays_valid) {
+  const Domain d = io::read_poly(std::string(ACUTE_TEST_DATA_DIR) + "/regressions/pinch_vertex.poly");
+  MeshOptions options;
+  options.target_vertices = 300;
+  const MeshResult result = generate_mesh(d, options);
+  EXPECT_MESH_VALID(result.mesh);
+  EXPECT_EQ(detail::constraint_violation(result.mesh), "");
+  expect_input_points_kept(result.mesh, d);
+  EXPECT_NEAR(test::total_area(result.mesh), test::total_area(build_domain_cdt(d)), 1e-12 * test::total_area(result.mesh));
 }
 
 }  // namespace

@@ -21,27 +21,24 @@ bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const st
       }
   };
   for (auto vh : movable) add_faces_of(vh);
-  // A ring vertex touched by the region in several fans would become a complex vertex: absorb it.
+  // Once the region's faces are removed, a frozen ring vertex must keep a single gap in its fan
+  // (gaps of the mesh boundary count too), or re-adding faces would meet a complex vertex.
+  auto missing = [&](FaceHandle fh) { return !fh.is_valid() || in_region[static_cast<std::size_t>(fh.idx())]; };
+  auto gaps_after_removal = [&](VertexHandle vh) {
+    int gaps = 0;
+    for (auto heh : big.voh_range(vh))
+      gaps += missing(big.face_handle(heh)) && !missing(big.face_handle(big.opposite_halfedge_handle(heh)));
+    return gaps;
+  };
+  // Absorb such vertices into the region (a few passes: absorbing adds faces).
   for (int pass = 0; pass < 4; ++pass) {
     std::vector<VertexHandle> absorb;
     for (auto fh : faces)
-      for (auto vh : big.fv_range(fh)) {
-        if (is_movable[static_cast<std::size_t>(vh.idx())]) continue;
-        // Once the region's faces are removed, vh must keep a single gap in its fan (gaps of the
-        // mesh boundary count too), or re-adding faces would meet a complex vertex.
-        int gaps = 0;
-        for (auto heh : big.voh_range(vh)) {
-          const FaceHandle a = big.face_handle(heh);
-          const FaceHandle b = big.face_handle(big.opposite_halfedge_handle(heh));  // the neighbour around vh
-          const bool missing_a = !a.is_valid() || in_region[static_cast<std::size_t>(a.idx())];
-          const bool missing_b = !b.is_valid() || in_region[static_cast<std::size_t>(b.idx())];
-          gaps += missing_a && !missing_b;
-        }
-        if (gaps > 1) {
+      for (auto vh : big.fv_range(fh))
+        if (!is_movable[static_cast<std::size_t>(vh.idx())] && gaps_after_removal(vh) > 1) {
           is_movable[static_cast<std::size_t>(vh.idx())] = 1;
           absorb.push_back(vh);
         }
-      }
     if (absorb.empty()) break;
     for (auto vh : absorb) {
       movable.push_back(vh);
@@ -50,16 +47,8 @@ bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const st
   }
   if (faces.empty()) return false;
   for (auto fh : faces)
-    for (auto vh : big.fv_range(fh)) {
-      if (is_movable[static_cast<std::size_t>(vh.idx())]) continue;
-      int gaps = 0;
-      for (auto heh : big.voh_range(vh)) {
-        const FaceHandle a = big.face_handle(heh);
-        const FaceHandle b = big.face_handle(big.opposite_halfedge_handle(heh));
-        gaps += (!a.is_valid() || in_region[static_cast<std::size_t>(a.idx())]) && !(!b.is_valid() || in_region[static_cast<std::size_t>(b.idx())]);
-      }
-      if (gaps > 1) return false;  // could not be absorbed in a few passes: leave this cluster alone
-    }
+    for (auto vh : big.fv_range(fh))
+      if (!is_movable[static_cast<std::size_t>(vh.idx())] && gaps_after_removal(vh) > 1) return false;  // leave this cluster alone
 
   region = Region{};
   Mesh& sub = region.sub;
