@@ -174,7 +174,7 @@ class Repairer {
       }
       Mesh best;
       Score best_score = base;
-      search(region, stuck_ > 2, best, best_score);
+      search(region, stuck_ > 1, best, best_score);
       if (best_score < base) {
         if (paranoid_) {
           auto area = [](const Mesh& m) { double a = 0; for (auto fh : m.faces()) { const auto p = face_points(m, fh); a += signed_area2(p[0], p[1], p[2]); } return a; };
@@ -310,7 +310,7 @@ class Repairer {
       if (o.score < best_score) best_score = o.score, best = o.mesh, best_candidate_ = o.candidate;
     if (!deep || best_score < score(region.sub, region.forced)) return;
     std::sort(level1.begin(), level1.end(), [](const Outcome& a, const Outcome& b) { return a.score < b.score; });
-    if (level1.size() > 4) level1.resize(4);
+    if (level1.size() > 6) level1.resize(6);
     for (const auto& first : level1) {
       std::vector<Outcome> level2;
       expand(first.mesh, region.forced, level2);
