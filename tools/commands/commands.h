@@ -2,10 +2,13 @@
 // run_guarded(), which maps exceptions to the documented exit codes.
 #pragma once
 
+#include <acute/mesher.h>
+
 #include <CLI/CLI.hpp>
 
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace acute::cli {
 
@@ -17,6 +20,9 @@ struct GlobalOptions {
   bool quiet = false;
   bool verbose = false;
 };
+
+/// Prints the first few bad triangles left, one line each, on stderr.
+void print_bad_triangles(const std::vector<BadTriangle>& remaining);
 
 /// Runs body; prints "acute: <message>" on one line for a libacute exception and returns the code.
 int run_guarded(const std::function<int()>& body);

@@ -2,10 +2,20 @@
 
 #include <acute/core/errors.h>
 
+#include <cstdio>
 #include <exception>
 #include <iostream>
 
 namespace acute::cli {
+
+void print_bad_triangles(const std::vector<BadTriangle>& remaining) {
+  for (std::size_t i = 0; i < remaining.size() && i < 5; ++i) {
+    const auto& t = remaining[i];
+    std::fprintf(stderr, "  triangle (%.17g, %.17g) (%.17g, %.17g) (%.17g, %.17g): angles %.3f..%.3f\n", t.corners[0].x(),
+                 t.corners[0].y(), t.corners[1].x(), t.corners[1].y(), t.corners[2].x(), t.corners[2].y(), t.min_angle_deg,
+                 t.max_angle_deg);
+  }
+}
 
 int run_guarded(const std::function<int()>& body) {
   try {

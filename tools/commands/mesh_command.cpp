@@ -92,12 +92,7 @@ int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
   const int code = result.status == MeshStatus::BoundsNotMet ? BoundsNotMet : Ok;
   if (result.status == MeshStatus::BoundsNotMet && !global.quiet) {
     std::cerr << "acute: bounds not met: " << result.remaining.size() << " bad triangle(s) remain, e.g.\n";
-    for (std::size_t i = 0; i < result.remaining.size() && i < 5; ++i) {
-      const auto& t = result.remaining[i];
-      std::fprintf(stderr, "  triangle (%.17g, %.17g) (%.17g, %.17g) (%.17g, %.17g): angles %.3f..%.3f\n", t.corners[0].x(),
-                   t.corners[0].y(), t.corners[1].x(), t.corners[1].y(), t.corners[2].x(), t.corners[2].y(), t.min_angle_deg,
-                   t.max_angle_deg);
-    }
+    print_bad_triangles(result.remaining);
   }
   if (args.json) {
     nlohmann::json j;

@@ -137,12 +137,7 @@ int run_repair(RepairArgs args, const GlobalOptions& global) {
     std::cerr << "acute: bounds not met: " << result.n_bad << " bad triangle(s)";
     if (options.keep_vertices) std::cerr << ", " << result.n_obtuse_exact << " exactly obtuse";
     std::cerr << " remain, e.g.\n";
-    for (std::size_t i = 0; i < result.remaining.size() && i < 5; ++i) {
-      const auto& t = result.remaining[i];
-      std::fprintf(stderr, "  triangle (%.17g, %.17g) (%.17g, %.17g) (%.17g, %.17g): angles %.3f..%.3f\n", t.corners[0].x(),
-                   t.corners[0].y(), t.corners[1].x(), t.corners[1].y(), t.corners[2].x(), t.corners[2].y(), t.min_angle_deg,
-                   t.max_angle_deg);
-    }
+    print_bad_triangles(result.remaining);
   }
   if (args.json) {
     nlohmann::json j;
