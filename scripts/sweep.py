@@ -2,7 +2,7 @@
 """Runs `acute mesh` over many domains and judges every output with shared/tools/meshcheck.
 
 Usage: scripts/sweep.py [--acute build/bin/acute] [--method acute] [--vertices N | --size H]
-                        [--min-angle 30 --max-angle 90] [--jobs 2] [--timeout 600] [--out DIR] DOMAIN...
+                        [--min-angle 30 --max-angle 90] [--jobs 2] [--timeout 600] [--out DIR] [--extra 'ARGS'] DOMAIN...
 Prints one Markdown table row per domain and a summary line; exit 1 if any run failed validity.
 """
 import argparse, json, os, subprocess, sys, time
@@ -20,6 +20,7 @@ def run_one(args, domain):
     if args.vertices: cmd += ["--vertices", str(args.vertices)]
     if args.size: cmd += ["--size", str(args.size)]
     if name == "box": cmd += ["--convex-hull"]
+    cmd += args.extra.split()
     t0 = time.time()
     try:
         p = subprocess.run(cmd, capture_output=True, text=True, timeout=args.timeout)
@@ -61,6 +62,7 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--timeout", type=float, default=600)
     ap.add_argument("--out", default="/tmp/acute-sweep")
+    ap.add_argument("--extra", default="", help="more arguments for acute mesh, e.g. '--time-limit 60'")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     with ThreadPoolExecutor(args.jobs) as ex:

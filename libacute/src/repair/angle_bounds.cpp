@@ -45,6 +45,45 @@ std::vector<bool> forced_corner_vertices(const Mesh& mesh, double min_deg) {
   return forced;
 }
 
+double sector_angle(const Mesh& mesh, VertexHandle vh, FaceHandle fh) {
+  auto is_wall = [&](HalfedgeHandle out) {
+    return is_constrained(mesh, mesh.edge_handle(out)) || mesh.is_boundary(mesh.opposite_halfedge_handle(out)) ||
+           mesh.is_boundary(out);
+  };
+  auto frozen = [&](HalfedgeHandle out) { return mesh.data(mesh.edge_handle(out)).frozen; };
+  HalfedgeHandle first;
+  for (auto heh : mesh.voh_range(vh))
+    if (mesh.face_handle(heh) == fh) first = heh;
+  if (!first.is_valid()) return -1;
+  // Rewind clockwise to the wall spoke that starts the sector (a spoke with the sector's face on its left).
+  HalfedgeHandle h = first;
+  for (std::size_t guard = 0;; ++guard) {
+    if (frozen(h)) return -1;
+    if (is_wall(h) || guard > 1024) break;
+    const HalfedgeHandle o = mesh.opposite_halfedge_handle(h);
+    h = mesh.next_halfedge_handle(o);
+    if (h == first) break;  // no wall: the full star
+  }
+  const Point2 p = point2(mesh, vh);
+  double sector = 0;
+  const HalfedgeHandle start = h;
+  for (std::size_t guard = 0; guard < 1024; ++guard) {
+    if (mesh.is_boundary(h)) return -1;
+    const HalfedgeHandle back = mesh.prev_halfedge_handle(h);
+    sector += angle_at(p, point2(mesh, mesh.to_vertex_handle(h)), point2(mesh, mesh.from_vertex_handle(back)));
+    h = mesh.opposite_halfedge_handle(back);
+    if (frozen(h)) return -1;
+    if (h == start || is_wall(h)) break;
+  }
+  return sector;
+}
+
+bool min_exempt_corner(const Mesh& mesh, VertexHandle vh, FaceHandle fh, double min_deg, const std::vector<bool>& forced) {
+  const auto i = static_cast<std::size_t>(vh.idx());
+  if (i >= forced.size() || !forced[i]) return false;
+  return sector_angle(mesh, vh, fh) < min_deg;
+}
+
 double triangle_margin(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds, bool exempt_min) {
   const auto p = face_points(mesh, fh);
   const auto a = angles_deg(p[0], p[1], p[2]);

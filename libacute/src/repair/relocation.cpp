@@ -37,12 +37,12 @@ double star_energy(const Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   double energy = 0;
   for (auto heh : mesh.voh_range(vh)) {
     if (mesh.is_boundary(heh)) continue;
-    const bool exempt = face_exempt(mesh, heh, forced);
-    const Point2 a = point2(mesh, vh), b = point2(mesh, mesh.to_vertex_handle(heh));
-    const Point2 c = point2(mesh, mesh.to_vertex_handle(mesh.next_halfedge_handle(heh)));
-    for (double angle : angles_deg(a, b, c)) {
-      double m = bounds.max_deg - angle;
-      if (!exempt) m = std::min(m, angle - bounds.min_deg);
+    const FaceHandle fh = mesh.face_handle(heh);
+    const VertexHandle corner[3] = {vh, mesh.to_vertex_handle(heh), mesh.to_vertex_handle(mesh.next_halfedge_handle(heh))};
+    const auto angles = angles_deg(point2(mesh, corner[0]), point2(mesh, corner[1]), point2(mesh, corner[2]));
+    for (int k = 0; k < 3; ++k) {
+      double m = bounds.max_deg - angles[k];
+      if (!min_exempt_corner(mesh, corner[k], fh, bounds.min_deg, forced)) m = std::min(m, angles[k] - bounds.min_deg);
       energy += std::exp(-m / kTau);
     }
   }

@@ -6,6 +6,7 @@
 #include <acute/ops/insert.h>
 #include <acute/ops/remove.h>
 #include <acute/repair/clusters.h>
+#include <acute/repair/joint_relaxation.h>
 #include <acute/repair/relocation.h>
 
 #include "repair/region.h"
@@ -301,11 +302,35 @@ class Repairer {
     }
   }
 
+  /// Joint relaxation of every movable vertex of a region copy, then Delaunay restoration and a
+  /// sweep of one-vertex relocation.
+  void relax_sub(Mesh& sub, const std::vector<bool>& forced) {
+    std::vector<VertexHandle> all;
+    for (auto vh : sub.vertices())
+      if (!sub.status(vh).deleted()) all.push_back(vh);
+    if (!relax_jointly(sub, all, bounds_, forced)) return;
+    std::vector<EdgeHandle> queue;
+    for (auto eh : sub.edges())
+      if (!sub.status(eh).deleted()) queue.push_back(eh);
+    restore_delaunay(sub, queue);
+    smooth_sub(sub, forced, 1);
+  }
+
   /// Best of the candidate operations; when `deep`, also every candidate applied to the four best
   /// results of the first level (two-step edits for clusters no single operation improves).
   void search(const detail::Region& region, bool deep, Mesh& best, Score& best_score) {
     std::vector<Outcome> level1;
     expand(region.sub, region.forced, level1);
+    // Where one-vertex moves are stuck, the best few outcomes also get a joint relaxation.
+    std::sort(level1.begin(), level1.end(), [](const Outcome& a, const Outcome& b) { return a.score < b.score; });
+    for (std::size_t i = 0; i < std::min<std::size_t>(std::getenv("ACUTE_NO_JOINT") ? 0 : 3, level1.size()); ++i) {
+      Outcome& o = level1[i];
+      if (o.score.bad == 0 && o.score.infeasible == 0) break;
+      Mesh relaxed = o.mesh;
+      relax_sub(relaxed, region.forced);
+      const Score r = score(relaxed, region.forced);
+      if (r < o.score) o.mesh = std::move(relaxed), o.score = r;
+    }
     for (auto& o : level1)
       if (o.score < best_score) best_score = o.score, best = o.mesh, best_candidate_ = o.candidate;
     if (!deep || best_score < score(region.sub, region.forced)) return;
@@ -397,6 +422,28 @@ class Repairer {
         const EdgeHandle eh = sub.edge_handle(heh);
         if (sub.is_boundary(eh) && !is_constrained(sub, eh)) return false;
         return split_edge(sub, eh, 0.5 * (point2(sub, ends[0]) + point2(sub, ends[1]))).is_valid();
+      });
+
+    // Split the constrained edges around the link of the vertex with the large angle: in a strip one
+    // triangle wide, a vertex on one side with too few triangles needs a new neighbour on the other
+    // side, which only a point on that side's segment gives.
+    std::vector<std::array<VertexHandle, 2>> walls;
+    for (auto w : sub0.vv_range(vmax))
+      for (auto heh : sub0.voh_range(w)) {
+        const EdgeHandle eh = sub0.edge_handle(heh);
+        if (!is_constrained(sub0, eh) || sub0.data(eh).frozen) continue;
+        const VertexHandle z = sub0.to_vertex_handle(heh);
+        if (z == vmax || w == vmax) continue;
+        const VertexHandle wv = w;
+        std::array<VertexHandle, 2> ends{std::min(wv, z), std::max(wv, z)};
+        if (std::find(walls.begin(), walls.end(), ends) == walls.end()) walls.push_back(ends);
+      }
+    if (walls.size() > 8) walls.resize(8);
+    for (const auto& ends : walls)
+      attempt([&, ends](Mesh& sub) {
+        const auto heh = sub.find_halfedge(ends[0], ends[1]);
+        if (!heh.is_valid()) return false;
+        return split_edge(sub, sub.edge_handle(heh), 0.5 * (point2(sub, ends[0]) + point2(sub, ends[1]))).is_valid();
       });
 
     // Compound: split every splittable edge of the worst face at its midpoint (local refinement for

@@ -24,6 +24,17 @@ std::array<double, 3> angles_deg(const Point2& a, const Point2& b, const Point2&
 /// min bound (not from the max bound), as in meshcheck.
 std::vector<bool> forced_corner_vertices(const Mesh& mesh, double min_deg);
 
+/// The angle (degrees) of the domain sector at vh that contains face fh: the fan of faces around vh
+/// between consecutive constrained or boundary edges. Negative when unknown: the fan meets the
+/// frozen border of a region copy before closing. A full star without walls gives 360.
+double sector_angle(const Mesh& mesh, VertexHandle vh, FaceHandle fh);
+
+/// True when the min bound does not apply to the angle of face fh at its corner vh: vh is a forced
+/// corner and the sector holding fh is narrower than min_deg (or unknown). Sharper than the
+/// per-triangle exemption of is_bad_triangle (which follows the referee): used by the energies so
+/// that a small angle at a forced vertex in one of its wide sectors still gets pushed up.
+bool min_exempt_corner(const Mesh& mesh, VertexHandle vh, FaceHandle fh, double min_deg, const std::vector<bool>& forced);
+
 /// How far triangle fh is from the bounds: the smallest margin min(angle - min, max - angle) over
 /// its angles, in degrees (negative when bad). `exempt_min` drops the min-bound part.
 double triangle_margin(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds, bool exempt_min);
