@@ -126,16 +126,21 @@ void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code
       "Examples:\n"
       "  acute mesh meshes/A.poly -o A.off                    # acute mesh, every angle in [30, 90)\n"
       "  acute mesh meshes/A.poly -o A.vtu --vertices 20000 --dual A_dual.vtu\n"
-      "  acute mesh meshes/A.poly -o A.off --method refine --min-angle 30 --size 0.5\n"
+      "  acute mesh meshes/A.poly -o A.off --method refine --min-angle 30 --size 0.05\n"
       "  acute mesh meshes/A.poly -o A.svg --method cdt\n"
       "  acute mesh meshes/A.poly -o A.off --pictures A        # A_before.svg (the CDT), A_after.svg,\n"
       "                                                         # A_before_histogram.svg, A_after_histogram.svg\n"
       "On a terminal, stderr shows one updating progress line (phase, iteration, bad triangles,\n"
       "elapsed time); never when stderr is a file or pipe, nor with -q.\n"
       "Exit codes: 0 ok, 1 bounds not met (best mesh still written), 2 invalid input, 3 I/O error.");
-  cmd->add_option("domain", args->input, "Input domain")->required()->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", args->output, "Output mesh (.off .obj .ply .node .ele .vtk .vtu .msh .svg)")->required();
-  cmd->add_option("--method", args->method, "cdt | refine | cvt | acute")->capture_default_str();
+  cmd->add_option("domain", args->input, "Domain: .poly, CG:SHOP .json, or a mesh (.off .obj .ply .node/.ele) whose region is meshed")
+      ->type_name("DOMAIN")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args->output, "Output mesh, format from the extension: .off .obj .ply .node .ele .vtk .vtu .msh .svg")
+      ->type_name("OUT")
+      ->required();
+  cmd->add_option("--method", args->method, "cdt | refine | cvt | acute")->type_name("METHOD")->capture_default_str();
   cmd->add_option("--min-angle", args->options.min_angle_deg, "Smallest allowed angle (degrees)")->capture_default_str();
   cmd->add_option("--max-angle", args->options.max_angle_deg, "Angles must be strictly below this (degrees)")->capture_default_str();
   auto* size = cmd->add_option("--size", args->options.size, "Target edge length");
@@ -145,14 +150,15 @@ void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code
   cmd->add_option("--max-iterations", args->options.max_iterations, "Iteration cap (0: method default)");
   cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();
   cmd->add_option("--time-limit", args->options.time_limit_s, "Time limit in seconds (0: none)");
-  cmd->add_option("--dual", args->dual, "Also write the circumcentric dual (.off .obj .ply .vtk .vtu .svg)");
+  cmd->add_option("--dual", args->dual, "Also write the circumcentric dual (.off .obj .ply .vtk .vtu .svg)")->type_name("DUAL");
   cmd->add_option("--pictures", args->pictures,
-                  "Also write PREFIX_before.svg (the CDT of the domain), PREFIX_after.svg and their angle histograms");
+                  "Also write PREFIX_before.svg (the CDT of the domain), PREFIX_after.svg and their angle histograms")
+      ->type_name("PREFIX");
   cmd->add_flag("--convex-hull", args->convex_hull, "Mesh the convex hull of the points (Triangle -c)");
   cmd->add_flag("--split-crossings", args->split_crossings, "Split crossing segments instead of failing");
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", const_cast<GlobalOptions&>(global).quiet, "No output but errors");
-  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "More output");
+  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "Log each phase on stderr (off a terminal also each repair iteration)");
   cmd->callback([args, &global, &exit_code] { exit_code = run_guarded([&] { return run_mesh(*args, global); }); });
 }
 

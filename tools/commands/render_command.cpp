@@ -119,9 +119,10 @@ void add_render_command(CLI::App& app, const GlobalOptions& global, int& exit_co
       "  acute render out.off -o out.svg --domain in.poly --min-angle 30 --max-angle 90\n"
       "  acute render out.off -o hist.svg --histogram --bin-width 5\n"
       "  acute render small.off -o small.svg --labels      # vertex indices (up to 500 vertices)\n");
-  sub->add_option("mesh", args->mesh_path, "Triangle mesh (.off .obj .ply .node/.ele)")->required()->check(CLI::ExistingFile);
-  sub->add_option("-o,--output", args->out_path, "Output SVG file")->required();
+  sub->add_option("mesh", args->mesh_path, "Triangle mesh (.off .obj .ply .node/.ele)")->type_name("MESH")->required()->check(CLI::ExistingFile);
+  sub->add_option("-o,--output", args->out_path, "Output SVG file")->type_name("OUT.svg")->required();
   sub->add_option("--domain", args->domain_path, "Input domain (.poly, CG:SHOP .json, or a mesh): draws its segments bold")
+      ->type_name("DOMAIN")
       ->check(CLI::ExistingFile);
   sub->add_option("--min-angle", args->min_angle, "Angles below this are bad (degrees, default 30)")->check(CLI::Range(0.0, 180.0));
   sub->add_option("--max-angle", args->max_angle, "Angles not below this are bad (degrees, default 90)")->check(CLI::Range(0.0, 180.0));

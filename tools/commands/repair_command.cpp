@@ -198,9 +198,11 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
       "  reports those vertices as missing; check such output against your own domain.\n"
       "Exit codes: 0 ok, 1 bounds not met (best mesh still written), 2 invalid input, 3 I/O error.");
   cmd->add_option("input", args->input, "Input mesh (.off .obj .ply .node .ele), or with --keep-vertices a domain (.json .poly)")
+      ->type_name("INPUT")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->outputs, "Output: a mesh (.off .obj .ply .vtk .vtu .msh .svg ...) or a CG:SHOP solution (.json); repeatable")
+      ->type_name("OUT")
       ->required();
   auto* min = cmd->add_option("--min-angle", args->options.min_angle_deg, "Smallest allowed angle (degrees)")->capture_default_str();
   auto* max = cmd->add_option("--max-angle", args->options.max_angle_deg, "Angles must be strictly below this (degrees)")
@@ -208,6 +210,7 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
   auto* feature = cmd->add_option("--feature-angle", args->options.feature_angle_deg,
                                   "Merge boundary runs straighter than this (degrees) into one segment");
   cmd->add_option("--features", args->features, "File of interior edges to keep (vertex index pairs, 0-based)")
+      ->type_name("FILE")
       ->check(CLI::ExistingFile);
   auto* keep = cmd->add_flag("--keep-vertices", args->options.keep_vertices, "Keep every input vertex; only remove obtuse angles");
   keep->excludes(min)->excludes(max)->excludes(feature);
@@ -221,12 +224,13 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
   cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();
   cmd->add_option("--time-limit", args->options.time_limit_s, "Repair time limit in seconds (0: none)");
   cmd->add_option("--pictures", args->pictures,
-                  "Also write PREFIX_before.svg (the input), PREFIX_after.svg and their angle histograms");
+                  "Also write PREFIX_before.svg (the input), PREFIX_after.svg and their angle histograms")
+      ->type_name("PREFIX");
   cmd->add_flag("--exact", args->exact,
                 ".off output: vertices on slanted segments as exact rationals \"p/q\" lying on the segment (meshcheck reads them)");
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", const_cast<GlobalOptions&>(global).quiet, "No output but errors");
-  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "More output");
+  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "Log each phase on stderr (off a terminal also each repair iteration)");
   cmd->callback([args, &global, &exit_code] { exit_code = run_guarded([&] { return run_repair(*args, global); }); });
 }
 
