@@ -128,9 +128,11 @@ void write_angle_histogram_svg(const Mesh& mesh, const std::string& path, const 
   }
   detail::begin_text_group(out);
   const double y = detail::write_text_lines(out, legend, 20, legend_top);
-  detail::write_swatch(out, 20, y, kSmallFill,
-                       "angle < " + svg_fixed(options.min_angle_deg, 1) + "\u00b0: " + std::to_string(totals[kSmall]) + " angles");
-  detail::write_swatch(out, 20, y + detail::SvgFrame::kLineGap, kLargeFill,
+  const bool min_bound = options.min_angle_deg > 0;  // as write_svg: no swatch for a min bound of 0
+  if (min_bound)
+    detail::write_swatch(out, 20, y, kSmallFill,
+                         "angle < " + svg_fixed(options.min_angle_deg, 1) + "\u00b0: " + std::to_string(totals[kSmall]) + " angles");
+  detail::write_swatch(out, 20, min_bound ? y + detail::SvgFrame::kLineGap : y, kLargeFill,
                        "angle \u2265 " + svg_fixed(options.max_angle_deg, 1) + "\u00b0: " + std::to_string(totals[kLarge]) +
                            " angles");
   out << "</g>\n</svg>\n";

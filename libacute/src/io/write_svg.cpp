@@ -110,8 +110,10 @@ void write_svg(const Mesh& mesh, const std::string& path, const WriteOptions& op
   }
   detail::begin_text_group(out);
   const double y = detail::write_text_lines(out, legend, frame.margin(), frame.legend_top());
-  detail::write_swatch(out, frame.margin(), y, kSmallFill, bounds_small + std::to_string(n_small) + " triangles");
-  detail::write_swatch(out, frame.margin(), y + detail::SvgFrame::kLineGap, kLargeFill,
+  // No min bound (0, e.g. the keep-vertices repair): its swatch would say nothing.
+  const bool min_bound = options.min_angle_deg > 0;
+  if (min_bound) detail::write_swatch(out, frame.margin(), y, kSmallFill, bounds_small + std::to_string(n_small) + " triangles");
+  detail::write_swatch(out, frame.margin(), min_bound ? y + detail::SvgFrame::kLineGap : y, kLargeFill,
                        bounds_large + std::to_string(n_large) + " triangles");
   out << "</g>\n</svg>\n";
   file.commit();
