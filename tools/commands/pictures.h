@@ -24,8 +24,8 @@ void check_picture_prefix(const std::string& prefix, const std::vector<std::stri
 std::vector<std::string> write_pictures(const std::string& prefix, const Mesh& before, const Mesh& after,
                                         const io::WriteOptions& options);
 
-/// Marks the boundary edges of a mesh read from a file as constrained, so the "before" picture
-/// draws them bold as the "after" picture draws the kept boundary.
+/// Marks the boundary edges of a mesh read from a file as constrained, so that pictures of it
+/// (the "before" picture, `acute render` without --domain) draw the boundary bold.
 void mark_boundary_constrained(Mesh& mesh);
 
 }  // namespace acute::cli

@@ -1,6 +1,7 @@
 // `acute render`: an SVG picture of a mesh (bad triangles filled, constraints bold, optional
 // vertex labels), or of its angle histogram.
 #include "commands/commands.h"
+#include "commands/pictures.h"
 
 #include <acute/core/errors.h>
 #include <acute/io/io.h>
@@ -87,7 +88,10 @@ void mark_domain(Mesh& mesh, const Domain& domain) {
 int run_render(const RenderArgs& a, const GlobalOptions& global) {
   if (!has_svg_extension(a.out_path)) throw InvalidInput(a.out_path + ": render writes SVG: name the output *.svg");
   Mesh mesh = io::read_mesh(a.mesh_path);
-  if (!a.domain_path.empty()) mark_domain(mesh, io::read_domain(a.domain_path));
+  if (!a.domain_path.empty())
+    mark_domain(mesh, io::read_domain(a.domain_path));
+  else
+    mark_boundary_constrained(mesh);  // a mesh file carries no segments: its boundary is the one we know
   io::WriteOptions opt;
   opt.min_angle_deg = a.min_angle;
   opt.max_angle_deg = a.max_angle;
@@ -112,7 +116,8 @@ void add_render_command(CLI::App& app, const GlobalOptions& global, int& exit_co
   CLI::App* sub = app.add_subcommand("render", "Draw a mesh, or its angle histogram, as SVG");
   sub->footer(
       "The mesh picture fills triangles with an angle below --min-angle (orange) or not below\n"
-      "--max-angle (red); with --domain, mesh edges on its segments are drawn bold (constraints).\n"
+      "--max-angle (red); the boundary is drawn bold, and with --domain every mesh edge on one of its\n"
+      "segments (interior ones too).\n"
       "--histogram draws all 3T angles in bins of --bin-width degrees over [0, 180] instead: the\n"
       "angles outside the bounds in the same colours, the bounds as dashed lines.\n\n"
       "Examples:\n"
