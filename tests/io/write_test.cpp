@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -135,6 +136,73 @@ TEST(WriteSvg, legend_counts_and_fills) {
   EXPECT_NE(svg.find("&lt; 30.0\u00b0: 1 triangles"), std::string::npos) << "needle counted below min";
   EXPECT_NE(svg.find("stroke=\"black\""), std::string::npos) << "constrained edge drawn bold";
   EXPECT_NE(svg.find("angles from "), std::string::npos);
+}
+
+namespace {
+// The two triangles of legend_counts_and_fills: right isosceles (90, 45, 45) and an acute needle
+// (22.6 at its apex, 78.7 twice).
+Mesh right_and_needle() {
+  Mesh m;
+  const auto a = m.add_vertex({0, 0, 0}), b = m.add_vertex({1, 0, 0}), c = m.add_vertex({0, 1, 0}),
+             d = m.add_vertex({3, 3, 0});
+  m.add_face(a, b, c);
+  m.add_face(b, d, c);
+  return m;
+}
+
+std::string slurp_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Sum of data-count over the bars of one kind ("" for all).
+std::size_t bar_sum(const std::string& svg, const std::string& kind) {
+  std::size_t sum = 0;
+  const std::string key = "data-kind=\"";
+  for (std::size_t at = svg.find("class=\"bar\""); at != std::string::npos; at = svg.find("class=\"bar\"", at + 1)) {
+    const std::size_t k = svg.find(key, at) + key.size();
+    const std::size_t n = svg.find("data-count=\"", at) + 12;
+    if (kind.empty() || svg.compare(k, kind.size() + 1, kind + "\"") == 0) sum += std::stoul(svg.substr(n));
+  }
+  return sum;
+}
+}  // namespace
+
+TEST(WriteHistogramSvg, bars_count_every_angle_by_kind) {
+  const Mesh m = right_and_needle();
+  io::WriteOptions options;
+  options.title = "two & more";
+  for (double bin : {5.0, 7.0, 180.0}) {
+    options.histogram_bin_deg = bin;
+    const std::string path = output("two_histogram.svg");
+    io::write_angle_histogram_svg(m, path, options);
+    const std::string svg = slurp_file(path);
+    EXPECT_EQ(bar_sum(svg, ""), 6u) << "bin " << bin;
+    EXPECT_EQ(bar_sum(svg, "large"), 1u) << "the exact right angle";
+    EXPECT_EQ(bar_sum(svg, "small"), 1u) << "the needle's apex";
+    EXPECT_EQ(bar_sum(svg, "ok"), 4u);
+    EXPECT_NE(svg.find("two &amp; more"), std::string::npos) << "title escaped";
+    EXPECT_EQ(std::count(svg.begin(), svg.end(), '<'), std::count(svg.begin(), svg.end(), '>')) << "balanced tags";
+  }
+  options.histogram_bin_deg = 0;
+  EXPECT_THROW(io::write_angle_histogram_svg(m, output("bad_bin.svg"), options), InvalidInput);
+  EXPECT_FALSE(std::filesystem::exists(output("bad_bin.svg")));
+}
+
+TEST(WriteSvg, vertex_labels_name_every_vertex) {
+  const Mesh m = right_and_needle();
+  io::WriteOptions options;
+  options.vertex_labels = true;
+  io::write_svg(m, output("two_labels.svg"), options);
+  const std::string svg = slurp_file(output("two_labels.svg"));
+  std::size_t circles = 0;
+  for (std::size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) ++circles;
+  EXPECT_EQ(circles, 4u);
+  for (const char* label : {">0</text>", ">1</text>", ">2</text>", ">3</text>"}) EXPECT_NE(svg.find(label), std::string::npos) << label;
+  io::write_svg(m, output("two_nolabels.svg"));
+  EXPECT_EQ(slurp_file(output("two_nolabels.svg")).find("<circle"), std::string::npos);
 }
 
 TEST(WriteSvg, large_mesh_stays_small) {

@@ -1,5 +1,8 @@
 // `acute mesh`: mesh a domain (.poly, CG:SHOP .json, or a mesh whose region is the domain).
 #include "commands/commands.h"
+#include "commands/pictures.h"
+#include "commands/progress.h"
+#include "commands/report.h"
 
 #include <acute/core/errors.h>
 #include <acute/io/io.h>
@@ -15,14 +18,13 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <unistd.h>
 
 namespace acute::cli {
 
 namespace {
 
 struct MeshArgs {
-  std::string input, output, method = "acute", dual;
+  std::string input, output, method = "acute", dual, pictures;
   MeshOptions options;
   bool convex_hull = false, split_crossings = false, json = false;
 };
@@ -46,28 +48,16 @@ int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
   MeshOptions options = args.options;
   options.method = parse_method(args.method);
   options.cdt.crossing = args.split_crossings ? CrossingSegments::Split : CrossingSegments::Error;
-  const bool tty = isatty(STDERR_FILENO) && !global.quiet;
-  auto last_phase = std::make_shared<std::string>();
-  if (tty || global.verbose)
-    options.observer = [tty, verbose = global.verbose, t0, last_phase](const MeshProgress& p) {
-      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (verbose && p.phase != *last_phase) {
-        std::fprintf(stderr, "%s[%8.3f s] phase %s\n", tty ? "\r" : "", t, p.phase.c_str());
-        *last_phase = p.phase;
-      }
-      if (verbose && !tty && p.phase == "repair") std::fprintf(stderr, "[%8.3f s] repair iteration %d: %zu bad\n", t, p.iteration, p.bad);
-      if (tty) {
-        std::fprintf(stderr, "\r%-8s iteration %5d  bad %8zu", p.phase.c_str(), p.iteration, p.bad);
-        std::fflush(stderr);
-      }
-    };
+  if (!args.pictures.empty()) check_picture_prefix(args.pictures, {args.output, args.dual});
+  ProgressLine progress(global, t0);
+  if (progress.wanted()) options.observer = [&progress](const MeshProgress& p) { progress.update(p.phase, p.iteration, p.bad); };
   MeshResult result;
   try {
     result = generate_mesh(domain, options);
   } catch (const InvalidInput& e) {
     throw InvalidInput(args.input + ": " + e.what());
   }
-  if (tty) std::fprintf(stderr, "\r%60s\r", "");
+  progress.finish();
   for (const auto& note : result.notes) warn(note);
 
   io::WriteOptions write_options;
@@ -84,44 +74,48 @@ int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
                 << " obtuse triangles\n";
   }
 
+  RunReport report;
+  if (!args.pictures.empty()) {
+    const Mesh before = build_domain_cdt(domain, options.cdt);
+    report.pictures = write_pictures(args.pictures, before, result.mesh, write_options);
+  }
+
   QualityOptions qopt;
   qopt.min_angle_deg = options.min_angle_deg;
   qopt.max_angle_deg = options.max_angle_deg;
   const QualityReport q = measure_quality(result.mesh, qopt, &domain);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const int code = result.status == MeshStatus::BoundsNotMet ? BoundsNotMet : Ok;
-  if (result.status == MeshStatus::BoundsNotMet && !global.quiet) {
-    std::cerr << "acute: bounds not met: " << result.remaining.size() << " bad triangle(s) remain, e.g.\n";
-    print_bad_triangles(result.remaining);
-  }
-  if (args.json) {
-    nlohmann::json j;
-    j["input"] = args.input;
-    j["output"] = args.output;
-    j["method"] = args.method;
-    j["status"] = result.status == MeshStatus::Ok ? "ok" : (result.status == MeshStatus::BoundsNotMet ? "bounds_not_met" : "n/a");
-    j["n_vertices"] = q.n_vertices;
-    j["n_triangles"] = q.n_triangles;
-    j["n_steiner"] = q.n_steiner ? nlohmann::json(*q.n_steiner) : nlohmann::json(nullptr);
-    j["min_angle"] = q.min_angle;
-    j["max_angle"] = q.max_angle;
-    j["free_min_angle"] = q.free_min_angle ? nlohmann::json(*q.free_min_angle) : nlohmann::json(nullptr);
-    j["n_obtuse"] = q.n_obtuse;
-    j["n_right"] = q.n_right;
-    j["n_below_min"] = q.n_below_min;
-    j["iterations"] = result.iterations;
-    j["seconds"] = seconds;
-    j["merged_duplicates"] = result.cdt.merged_duplicates;
-    if (dual_check)
-      j["dual"] = {{"well_centered", dual_check->well_centered()}, {"n_right", dual_check->n_right}, {"n_obtuse", dual_check->n_obtuse}};
-    std::cout << j.dump(2) << "\n";
-  } else if (!global.quiet) {
-    std::printf("%s: %zu vertices, %zu triangles, angles %.4f..%.4f deg, %zu obtuse, %zu below %.4g, %d iterations, %.3f s -> %s\n",
-                args.method.c_str(), q.n_vertices, q.n_triangles, q.min_angle, q.max_angle, q.n_obtuse, q.n_below_min,
-                options.min_angle_deg, result.iterations, seconds, args.output.c_str());
-  }
-  return code;
+  report.label = args.method;
+  report.input = args.input;
+  report.status = result.status == MeshStatus::Ok ? "ok" : (result.status == MeshStatus::BoundsNotMet ? "bounds_not_met" : "n/a");
+  report.bounds_not_met = result.status == MeshStatus::BoundsNotMet;
+  report.bad_summary = std::to_string(result.remaining.size()) + (result.remaining.size() >= 100 ? "+" : "") + " bad triangle(s)";
+  report.remaining = result.remaining;
+  report.n_vertices = q.n_vertices;
+  report.n_triangles = q.n_triangles;
+  report.n_steiner = q.n_steiner;
+  report.min_angle = q.min_angle;
+  report.max_angle = q.max_angle;
+  char figures[96];
+  std::snprintf(figures, sizeof figures, "%zu obtuse, %zu below %.4g", q.n_obtuse, q.n_below_min, options.min_angle_deg);
+  report.figures = figures;
+  report.iterations = result.iterations;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  report.outputs = {args.output};
+  if (!args.dual.empty()) report.outputs.push_back(args.dual);
+  nlohmann::json& j = report.extra;
+  j["output"] = args.output;
+  j["method"] = args.method;
+  j["free_min_angle"] = q.free_min_angle ? nlohmann::json(*q.free_min_angle) : nlohmann::json(nullptr);
+  j["n_obtuse"] = q.n_obtuse;
+  j["n_right"] = q.n_right;
+  j["n_below_min"] = q.n_below_min;
+  j["merged_duplicates"] = result.cdt.merged_duplicates;
+  if (dual_check)
+    j["dual"] = {{"well_centered", dual_check->well_centered()}, {"n_right", dual_check->n_right}, {"n_obtuse", dual_check->n_obtuse}};
+  print_report(report, args.json, global);
+  return report.bounds_not_met ? BoundsNotMet : Ok;
 }
+
 
 }  // namespace
 
@@ -131,12 +125,22 @@ void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code
   cmd->footer(
       "Examples:\n"
       "  acute mesh meshes/A.poly -o A.off                    # acute mesh, every angle in [30, 90)\n"
-      "  acute mesh meshes/A.poly -o A.off --method refine --min-angle 30 --size 0.5\n"
+      "  acute mesh meshes/A.poly -o A.vtu --vertices 20000 --dual A_dual.vtu\n"
+      "  acute mesh meshes/A.poly -o A.off --method refine --min-angle 30 --size 0.05\n"
       "  acute mesh meshes/A.poly -o A.svg --method cdt\n"
+      "  acute mesh meshes/A.poly -o A.off --pictures A        # A_before.svg (the CDT), A_after.svg,\n"
+      "                                                         # A_before_histogram.svg, A_after_histogram.svg\n"
+      "On a terminal, stderr shows one updating progress line (phase, iteration, bad triangles,\n"
+      "elapsed time); never when stderr is a file or pipe, nor with -q.\n"
       "Exit codes: 0 ok, 1 bounds not met (best mesh still written), 2 invalid input, 3 I/O error.");
-  cmd->add_option("domain", args->input, "Input domain")->required()->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", args->output, "Output mesh (.off .obj .node .ele .svg)")->required();
-  cmd->add_option("--method", args->method, "cdt | refine | cvt | acute")->capture_default_str();
+  cmd->add_option("domain", args->input, "Domain: .poly, CG:SHOP .json, or a mesh (.off .obj .ply .node/.ele) whose region is meshed")
+      ->type_name("DOMAIN")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args->output, "Output mesh, format from the extension: .off .obj .ply .node .ele .vtk .vtu .msh .svg")
+      ->type_name("OUT")
+      ->required();
+  cmd->add_option("--method", args->method, "cdt | refine | cvt | acute")->type_name("METHOD")->capture_default_str();
   cmd->add_option("--min-angle", args->options.min_angle_deg, "Smallest allowed angle (degrees)")->capture_default_str();
   cmd->add_option("--max-angle", args->options.max_angle_deg, "Angles must be strictly below this (degrees)")->capture_default_str();
   auto* size = cmd->add_option("--size", args->options.size, "Target edge length");
@@ -146,12 +150,15 @@ void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code
   cmd->add_option("--max-iterations", args->options.max_iterations, "Iteration cap (0: method default)");
   cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();
   cmd->add_option("--time-limit", args->options.time_limit_s, "Time limit in seconds (0: none)");
-  cmd->add_option("--dual", args->dual, "Also write the circumcentric dual (.off .obj .ply .vtk .vtu .svg)");
+  cmd->add_option("--dual", args->dual, "Also write the circumcentric dual (.off .obj .ply .vtk .vtu .svg)")->type_name("DUAL");
+  cmd->add_option("--pictures", args->pictures,
+                  "Also write PREFIX_before.svg (the CDT of the domain), PREFIX_after.svg and their angle histograms")
+      ->type_name("PREFIX");
   cmd->add_flag("--convex-hull", args->convex_hull, "Mesh the convex hull of the points (Triangle -c)");
   cmd->add_flag("--split-crossings", args->split_crossings, "Split crossing segments instead of failing");
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", const_cast<GlobalOptions&>(global).quiet, "No output but errors");
-  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "More output");
+  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "Log each phase on stderr (off a terminal also each repair iteration)");
   cmd->callback([args, &global, &exit_code] { exit_code = run_guarded([&] { return run_mesh(*args, global); }); });
 }
 

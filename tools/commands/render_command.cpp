@@ -1,10 +1,14 @@
-// `acute render`: an SVG picture of a mesh (bad triangles filled, constraints bold).
+// `acute render`: an SVG picture of a mesh (bad triangles filled, constraints bold, optional
+// vertex labels), or of its angle histogram.
 #include "commands/commands.h"
+#include "commands/pictures.h"
 
+#include <acute/core/errors.h>
 #include <acute/io/io.h>
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
+#include <iostream>
 #include <limits>
 #include <memory>
 #include <string>
@@ -14,6 +18,9 @@ namespace acute::cli {
 
 namespace {
 
+/// More labels than this would hide the mesh: --labels is ignored (with a note) above it.
+constexpr std::size_t kMaxLabelledVertices = 500;
+
 struct RenderArgs {
   std::string mesh_path;
   std::string out_path;
@@ -21,7 +28,14 @@ struct RenderArgs {
   std::string title;
   double min_angle = 30.0;
   double max_angle = 90.0;
+  bool histogram = false;
+  double bin_width = 5.0;
+  bool labels = false;
 };
+
+bool has_svg_extension(const std::string& path) {
+  return path.size() >= 4 && (path.compare(path.size() - 4, 4, ".svg") == 0 || path.compare(path.size() - 4, 4, ".SVG") == 0);
+}
 
 bool lex_less(const Point2& p, const Point2& q) { return p.x() != q.x() ? p.x() < q.x() : p.y() < q.y(); }
 
@@ -71,34 +85,61 @@ void mark_domain(Mesh& mesh, const Domain& domain) {
   }
 }
 
-int run_render(const RenderArgs& a) {
+int run_render(const RenderArgs& a, const GlobalOptions& global) {
+  if (!has_svg_extension(a.out_path)) throw InvalidInput(a.out_path + ": render writes SVG: name the output *.svg");
   Mesh mesh = io::read_mesh(a.mesh_path);
-  if (!a.domain_path.empty()) mark_domain(mesh, io::read_domain(a.domain_path));
+  if (!a.domain_path.empty())
+    mark_domain(mesh, io::read_domain(a.domain_path));
+  else
+    mark_boundary_constrained(mesh);  // a mesh file carries no segments: its boundary is the one we know
   io::WriteOptions opt;
   opt.min_angle_deg = a.min_angle;
   opt.max_angle_deg = a.max_angle;
   opt.title = a.title.empty() ? a.mesh_path : a.title;
+  opt.histogram_bin_deg = a.bin_width;
+  if (a.histogram) {
+    io::write_angle_histogram_svg(mesh, a.out_path, opt);
+    return Ok;
+  }
+  opt.vertex_labels = a.labels && mesh.n_vertices() <= kMaxLabelledVertices;
+  if (a.labels && !opt.vertex_labels && !global.quiet)
+    std::cerr << "acute: note: --labels ignored: " << mesh.n_vertices() << " vertices (labels are drawn up to "
+              << kMaxLabelledVertices << ")\n";
   io::write_svg(mesh, a.out_path, opt);
   return Ok;
 }
 
 }  // namespace
 
-void add_render_command(CLI::App& app, const GlobalOptions&, int& exit_code) {
+void add_render_command(CLI::App& app, const GlobalOptions& global, int& exit_code) {
   auto args = std::make_shared<RenderArgs>();
-  CLI::App* sub = app.add_subcommand("render", "Draw a triangle mesh as SVG (bad triangles filled, constraints bold)");
+  CLI::App* sub = app.add_subcommand("render", "Draw a mesh, or its angle histogram, as SVG");
   sub->footer(
-      "Triangles with an angle below --min-angle or not below --max-angle are filled. With --domain,\n"
-      "mesh edges lying on its segments are drawn as constraints.\n\n"
-      "Example:\n"
-      "  acute render out.off -o out.svg --domain in.poly --min-angle 30 --max-angle 90\n");
-  sub->add_option("mesh", args->mesh_path, "Triangle mesh (.off .obj .ply .node/.ele)")->required();
-  sub->add_option("-o,--output", args->out_path, "Output SVG file")->required();
-  sub->add_option("--domain", args->domain_path, "Input domain (.poly, CG:SHOP .json, or a mesh): draws its segments bold");
+      "The mesh picture fills triangles with an angle below --min-angle (orange) or not below\n"
+      "--max-angle (red); the boundary is drawn bold, and with --domain every mesh edge on one of its\n"
+      "segments (interior ones too).\n"
+      "--histogram draws all 3T angles in bins of --bin-width degrees over [0, 180] instead: the\n"
+      "angles outside the bounds in the same colours, the bounds as dashed lines.\n\n"
+      "Examples:\n"
+      "  acute render out.off -o out.svg --domain in.poly --min-angle 30 --max-angle 90\n"
+      "  acute render out.off -o hist.svg --histogram --bin-width 5\n"
+      "  acute render small.off -o small.svg --labels      # vertex indices (up to 500 vertices)\n");
+  sub->add_option("mesh", args->mesh_path, "Triangle mesh (.off .obj .ply .node/.ele)")->type_name("MESH")->required()->check(CLI::ExistingFile);
+  sub->add_option("-o,--output", args->out_path, "Output SVG file")->type_name("OUT.svg")->required();
+  sub->add_option("--domain", args->domain_path, "Input domain (.poly, CG:SHOP .json, or a mesh): draws its segments bold")
+      ->type_name("DOMAIN")
+      ->check(CLI::ExistingFile);
   sub->add_option("--min-angle", args->min_angle, "Angles below this are bad (degrees, default 30)")->check(CLI::Range(0.0, 180.0));
   sub->add_option("--max-angle", args->max_angle, "Angles not below this are bad (degrees, default 90)")->check(CLI::Range(0.0, 180.0));
+  auto* histogram = sub->add_flag("--histogram", args->histogram, "Draw the angle histogram instead of the mesh");
+  sub->add_option("--bin-width", args->bin_width, "Histogram bin width in degrees (default 5)")
+      ->check(CLI::Range(0.1, 180.0))
+      ->needs(histogram);
+  sub->add_flag("--labels", args->labels, "Label each vertex with its index (0-based; meshes up to 500 vertices)")
+      ->excludes(histogram);
   sub->add_option("--title", args->title, "Legend title (default: the mesh path)");
-  sub->callback([args, &exit_code] { exit_code = run_guarded([&] { return run_render(*args); }); });
+  sub->add_flag("-q,--quiet", const_cast<GlobalOptions&>(global).quiet, "No output but errors");
+  sub->callback([args, &global, &exit_code] { exit_code = run_guarded([&] { return run_render(*args, global); }); });
 }
 
 }  // namespace acute::cli

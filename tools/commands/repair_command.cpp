@@ -1,6 +1,9 @@
 // `acute repair`: make an existing mesh acute (region and boundary kept), or keep every input
 // vertex and remove the obtuse angles (--keep-vertices; CG:SHOP 2025 instances and solutions).
 #include "commands/commands.h"
+#include "commands/pictures.h"
+#include "commands/progress.h"
+#include "commands/report.h"
 
 #include <acute/core/errors.h>
 #include <acute/io/cgshop_solution.h>
@@ -16,14 +19,13 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
-#include <unistd.h>
 
 namespace acute::cli {
 
 namespace {
 
 struct RepairArgs {
-  std::string input, features, method = "acute", start = "auto";
+  std::string input, features, method = "acute", start = "auto", pictures;
   std::vector<std::string> outputs;
   RepairMeshOptions options;
   bool json = false, exact = false;
@@ -91,21 +93,25 @@ int run_repair(RepairArgs args, const GlobalOptions& global) {
   io::WarningSink warn = [&](const std::string& w) {
     if (!global.quiet) std::cerr << "acute: warning: " << w << "\n";
   };
-  const bool tty = isatty(STDERR_FILENO) && !global.quiet;
-  if (tty)
-    options.progress = [](const RepairMeshProgress& p) {
-      std::fprintf(stderr, "\r%-8s iteration %5d  bad %8zu", p.phase.c_str(), p.iteration, p.bad);
-      std::fflush(stderr);
-    };
+  if (!args.pictures.empty()) check_picture_prefix(args.pictures, args.outputs);
+  ProgressLine progress(global, t0);
+  if (progress.wanted())
+    options.progress = [&progress](const RepairMeshProgress& p) { progress.update(p.phase, p.iteration, p.bad); };
 
   RepairMeshResult result;
+  Mesh before;  // for --pictures
   try {
     if (domain_input) {
       Domain domain = io::read_domain(args.input, warn);
       result = repair_required_points(domain, options);
+      if (!args.pictures.empty()) before = build_domain_cdt(domain);
     } else {
       const Mesh mesh = io::read_mesh(args.input, warn);
       result = repair_mesh(mesh, options);
+      if (!args.pictures.empty()) {
+        before = mesh;
+        mark_boundary_constrained(before);
+      }
       result.domain.name = std::filesystem::path(args.input).stem().string();
     }
   } catch (const InvalidInput& e) {
@@ -113,7 +119,7 @@ int run_repair(RepairArgs args, const GlobalOptions& global) {
     if (what.rfind(args.input, 0) == 0) throw;
     throw InvalidInput(args.input + ": " + what);
   }
-  if (tty) std::fprintf(stderr, "\r%60s\r", "");
+  progress.finish();
   for (const auto& note : result.notes) warn(note);
 
   const double max_bound = options.keep_vertices ? (options.allow_right ? 90.000001 : 90.0) : options.max_angle_deg;
@@ -131,43 +137,39 @@ int run_repair(RepairArgs args, const GlobalOptions& global) {
       io::write_mesh(result.mesh, out, write_options);
   }
 
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const bool not_met = result.status == RepairMeshStatus::BoundsNotMet || result.status == RepairMeshStatus::Cancelled;
-  if (not_met && !global.quiet) {
-    std::cerr << "acute: bounds not met: " << result.n_bad << " bad triangle(s)";
-    if (options.keep_vertices) std::cerr << ", " << result.n_obtuse_exact << " exactly obtuse";
-    std::cerr << " remain, e.g.\n";
-    print_bad_triangles(result.remaining);
-  }
-  if (args.json) {
-    nlohmann::json j;
-    j["input"] = args.input;
-    j["outputs"] = args.outputs;
-    j["mode"] = options.keep_vertices ? "keep_vertices" : "remesh";
-    j["status"] = to_string(result.status);
-    j["min_angle_bound"] = min_bound;
-    j["max_angle_bound"] = max_bound;
-    j["n_input_vertices"] = result.n_input_vertices;
-    j["n_domain_points"] = result.domain.points.size();
-    j["n_vertices"] = result.n_vertices;
-    j["n_triangles"] = result.n_triangles;
-    j["n_steiner"] = result.n_steiner;
-    j["min_angle"] = result.min_angle_deg;
-    j["max_angle"] = result.max_angle_deg;
-    j["n_bad"] = result.n_bad;
-    j["n_obtuse_exact"] = result.n_obtuse_exact;
-    j["n_right_exact"] = result.n_right_exact;
-    j["iterations"] = result.iterations;
-    if (!result.start.empty()) j["start"] = result.start;
-    j["seconds"] = seconds;
-    if (!result.domain.instance_uid.empty()) j["instance_uid"] = result.domain.instance_uid;
-    std::cout << j.dump(2) << "\n";
-  } else if (!global.quiet) {
-    std::printf("repair: %zu vertices (%zu Steiner), %zu triangles, angles %.4f..%.4f deg, %zu bad, %d iterations, %.3f s\n",
-                result.n_vertices, result.n_steiner, result.n_triangles, result.min_angle_deg, result.max_angle_deg,
-                result.n_bad, result.iterations, seconds);
-  }
-  return not_met ? BoundsNotMet : Ok;
+  RunReport report;
+  if (!args.pictures.empty()) report.pictures = write_pictures(args.pictures, before, result.mesh, write_options);
+
+  report.label = "repair";
+  report.input = args.input;
+  report.status = to_string(result.status);
+  report.bounds_not_met = result.status == RepairMeshStatus::BoundsNotMet || result.status == RepairMeshStatus::Cancelled;
+  report.bad_summary = std::to_string(result.n_bad) + " bad triangle(s)";
+  if (options.keep_vertices) report.bad_summary += ", " + std::to_string(result.n_obtuse_exact) + " exactly obtuse";
+  report.remaining = result.remaining;
+  report.n_vertices = result.n_vertices;
+  report.n_triangles = result.n_triangles;
+  report.n_steiner = result.n_steiner;
+  report.min_angle = result.min_angle_deg;
+  report.max_angle = result.max_angle_deg;
+  report.figures = std::to_string(result.n_bad) + " bad";
+  report.iterations = result.iterations;
+  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  report.outputs = args.outputs;
+  nlohmann::json& j = report.extra;
+  j["outputs"] = args.outputs;
+  j["mode"] = options.keep_vertices ? "keep_vertices" : "remesh";
+  j["min_angle_bound"] = min_bound;
+  j["max_angle_bound"] = max_bound;
+  j["n_input_vertices"] = result.n_input_vertices;
+  j["n_domain_points"] = result.domain.points.size();
+  j["n_bad"] = result.n_bad;
+  j["n_obtuse_exact"] = result.n_obtuse_exact;
+  j["n_right_exact"] = result.n_right_exact;
+  if (!result.start.empty()) j["start"] = result.start;
+  if (!result.domain.instance_uid.empty()) j["instance_uid"] = result.domain.instance_uid;
+  print_report(report, args.json, global);
+  return report.bounds_not_met ? BoundsNotMet : Ok;
 }
 
 }  // namespace
@@ -186,15 +188,21 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
       "  acute repair ugly.off -o fixed.off\n"
       "  acute repair ugly.obj -o fixed.off --features creases.txt --feature-angle 1\n"
       "  acute repair inst.instance.json -o inst.solution.json -o inst.off --allow-right\n"
+      "  acute repair ugly.off -o fixed.off --pictures fix    # fix_before.svg, fix_after.svg and\n"
+      "                                                        # fix_before_histogram.svg, fix_after_histogram.svg\n"
+      "On a terminal, stderr shows one updating progress line (phase, iteration, bad triangles,\n"
+      "elapsed time); never when stderr is a file or pipe, nor with -q.\n"
       "Notes:\n"
       "  --feature-angle drops boundary vertices (and with a non-straight run changes the region):\n"
       "  the output then no longer keeps every boundary vertex, so `meshcheck OUT --domain IN`\n"
       "  reports those vertices as missing; check such output against your own domain.\n"
       "Exit codes: 0 ok, 1 bounds not met (best mesh still written), 2 invalid input, 3 I/O error.");
   cmd->add_option("input", args->input, "Input mesh (.off .obj .ply .node .ele), or with --keep-vertices a domain (.json .poly)")
+      ->type_name("INPUT")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->outputs, "Output: a mesh (.off .obj .ply .vtk .vtu .msh .svg ...) or a CG:SHOP solution (.json); repeatable")
+      ->type_name("OUT")
       ->required();
   auto* min = cmd->add_option("--min-angle", args->options.min_angle_deg, "Smallest allowed angle (degrees)")->capture_default_str();
   auto* max = cmd->add_option("--max-angle", args->options.max_angle_deg, "Angles must be strictly below this (degrees)")
@@ -202,6 +210,7 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
   auto* feature = cmd->add_option("--feature-angle", args->options.feature_angle_deg,
                                   "Merge boundary runs straighter than this (degrees) into one segment");
   cmd->add_option("--features", args->features, "File of interior edges to keep (vertex index pairs, 0-based)")
+      ->type_name("FILE")
       ->check(CLI::ExistingFile);
   auto* keep = cmd->add_flag("--keep-vertices", args->options.keep_vertices, "Keep every input vertex; only remove obtuse angles");
   keep->excludes(min)->excludes(max)->excludes(feature);
@@ -214,11 +223,14 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
   cmd->add_option("--max-iterations", args->options.max_iterations, "Repair iteration cap (0: default)");
   cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();
   cmd->add_option("--time-limit", args->options.time_limit_s, "Repair time limit in seconds (0: none)");
+  cmd->add_option("--pictures", args->pictures,
+                  "Also write PREFIX_before.svg (the input), PREFIX_after.svg and their angle histograms")
+      ->type_name("PREFIX");
   cmd->add_flag("--exact", args->exact,
                 ".off output: vertices on slanted segments as exact rationals \"p/q\" lying on the segment (meshcheck reads them)");
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", const_cast<GlobalOptions&>(global).quiet, "No output but errors");
-  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "More output");
+  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "Log each phase on stderr (off a terminal also each repair iteration)");
   cmd->callback([args, &global, &exit_code] { exit_code = run_guarded([&] { return run_repair(*args, global); }); });
 }
 

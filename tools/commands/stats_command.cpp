@@ -187,10 +187,10 @@ void add_stats_command(CLI::App& app, const GlobalOptions&, int& exit_code) {
       "Example:\n"
       "  acute stats out.off --domain in.poly --min-angle 30 --max-angle 90 --histogram\n"
       "  acute stats out.off --json > stats.json\n");
-  sub->add_option("mesh", args->mesh_path, "Triangle mesh (.off .obj .ply .node/.ele)")->required();
-  sub->add_option("--domain", args->domain_path, "Input domain (.poly, CG:SHOP .json, or a mesh)");
+  sub->add_option("mesh", args->mesh_path, "Triangle mesh (.off .obj .ply .node/.ele)")->type_name("MESH")->required();
+  sub->add_option("--domain", args->domain_path, "Input domain (.poly, CG:SHOP .json, or a mesh)")->type_name("DOMAIN");
   sub->add_flag("--json", args->json, "Print one JSON object");
-  sub->add_flag("--histogram", args->histogram, "Add a 10-degree histogram of all angles");
+  sub->add_flag("--histogram", args->histogram, "Add a 10-degree histogram of all angles (as a picture: acute render --histogram)");
   sub->add_option("--min-angle", args->min_angle, "Minimum angle bound in degrees (default 30; checked if given)")
       ->check(CLI::Range(0.0, 180.0));
   sub->add_option("--max-angle", args->max_angle, "Maximum angle bound in degrees, exclusive (default 90; checked if given)")

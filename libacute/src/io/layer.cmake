@@ -7,7 +7,9 @@ acute_add_layer(io
     src/io/domain_io.cpp
     src/io/mesh_io.cpp
     src/io/read_ply.cpp
+    src/io/svg_canvas.cpp
     src/io/write_svg.cpp
+    src/io/write_histogram_svg.cpp
     src/io/write_vtk.cpp
     src/io/write_msh.cpp
     src/io/write_ply.cpp

@@ -3,13 +3,12 @@
 #include "io/atomic_file.h"
 #include "io/cell_table.h"
 #include "io/io_detail.h"
+#include "io/svg_canvas.h"
 
 #include <acute/core/errors.h>
 #include <acute/io/io.h>
 
 #include <algorithm>
-#include <charconv>
-#include <limits>
 
 namespace acute::io {
 
@@ -45,31 +44,18 @@ void write_obj_table(const CellTable& t, const std::string& path) {
 
 namespace {
 
-constexpr double kWidth = 1000.0;
+using detail::svg_fixed;
+
 constexpr const char* kBadFill = "#d7191c";       // cell with non-positive area (folded)
 constexpr const char* kBoundaryFill = "#e6f0fa";  // cells of boundary vertices
 
-std::string fixed(double x, int digits = 2) {
-  char buf[64];
-  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::fixed, digits);
-  (void)ec;
-  return std::string(buf, ptr);
-}
-
 void write_dual_svg(const DualMesh& dual, const std::string& path, const Mesh* primal, const WriteOptions& options) {
-  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, xmax = -xmin, ymax = -xmin;
-  auto grow = [&](const Point2& p) {
-    xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
-    ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
-  };
-  for (const auto& p : dual.points) grow(p);
+  detail::SvgBox box;
+  for (const auto& p : dual.points) box.add(p);
   if (primal)
-    for (auto vh : primal->vertices()) grow(point2(*primal, vh));
-  if (!(xmin <= xmax)) xmin = ymin = 0, xmax = ymax = 1;
-  const double extent = std::max({xmax - xmin, ymax - ymin, std::numeric_limits<double>::min()});
-  const double scale = kWidth / extent, margin = 0.02 * kWidth;
-  const double draw_w = (xmax - xmin) * scale, draw_h = (ymax - ymin) * scale;
-  auto at = [&](const Point2& p) { return fixed((p.x() - xmin) * scale + margin) + ' ' + fixed((ymax - p.y()) * scale + margin); };
+    for (auto vh : primal->vertices()) box.add(point2(*primal, vh));
+  const detail::SvgFrame frame(box);
+  auto at = [&](const Point2& p) { return frame.at(p); };
 
   std::string cells, bad, boundary;
   double perimeter = 0;
@@ -91,7 +77,7 @@ void write_dual_svg(const DualMesh& dual, const std::string& path, const Mesh* p
       boundary += d;
     }
   }
-  const double mean_side = n_sides ? perimeter / double(n_sides) * scale : kWidth / 10;
+  const double mean_side = n_sides ? perimeter / double(n_sides) * frame.scale() : detail::SvgFrame::kDrawWidth / 10;
   const double thin = std::clamp(0.08 * mean_side, 0.03, 1.0);
 
   std::string primal_edges;
@@ -117,30 +103,18 @@ void write_dual_svg(const DualMesh& dual, const std::string& path, const Mesh* p
   }
   legend.push_back(std::to_string(n_bad) + " cells with non-positive area (red)");
 
-  const double font = 16.0, line_gap = 1.3 * font;
-  const double legend_top = draw_h + 2 * margin;
-  const double total_h = legend_top + double(legend.size()) * line_gap + margin;
-  const double total_w = std::max(draw_w + 2 * margin, 420.0);
-
   detail::AtomicFile file(path);
   std::ostream& out = file.stream();
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << fixed(total_w) << ' ' << fixed(total_h)
-      << "\" width=\"" << fixed(total_w, 0) << "\" height=\"" << fixed(total_h, 0) << "\">\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  detail::begin_svg(out, frame.page_width(), frame.page_height(legend.size()));
   if (!boundary.empty()) out << "<path fill=\"" << kBoundaryFill << "\" stroke=\"none\" d=\"" << boundary << "\"/>\n";
   if (!bad.empty()) out << "<path fill=\"" << kBadFill << "\" fill-opacity=\"0.6\" stroke=\"none\" d=\"" << bad << "\"/>\n";
   if (!primal_edges.empty())
-    out << "<path fill=\"none\" stroke=\"#bbb\" stroke-width=\"" << fixed(thin, 3) << "\" d=\"" << primal_edges << "\"/>\n";
+    out << "<path fill=\"none\" stroke=\"#bbb\" stroke-width=\"" << svg_fixed(thin, 3) << "\" d=\"" << primal_edges << "\"/>\n";
   if (!cells.empty())
-    out << "<path fill=\"none\" stroke=\"#2b5797\" stroke-width=\"" << fixed(1.5 * thin, 3)
+    out << "<path fill=\"none\" stroke=\"#2b5797\" stroke-width=\"" << svg_fixed(1.5 * thin, 3)
         << "\" stroke-linejoin=\"round\" d=\"" << cells << "\"/>\n";
-  out << "<g font-family=\"sans-serif\" font-size=\"" << fixed(font, 0) << "\" fill=\"black\">\n";
-  double y = legend_top + font;
-  for (const auto& text : legend) {
-    out << "<text x=\"" << fixed(margin) << "\" y=\"" << fixed(y) << "\">" << text << "</text>\n";
-    y += line_gap;
-  }
+  detail::begin_text_group(out);
+  detail::write_text_lines(out, legend, frame.margin(), frame.legend_top());
   out << "</g>\n</svg>\n";
   file.commit();
 }

@@ -1,44 +1,24 @@
-// SVG picture of a mesh: edges (constrained ones bold), bad triangles filled, a legend.
+// SVG picture of a mesh: edges (constrained ones bold), bad triangles filled, optional vertex
+// labels, a legend.
 #include "io/atomic_file.h"
 #include "io/io_detail.h"
+#include "io/svg_canvas.h"
 
 #include <acute/core/errors.h>
 #include <acute/io/io.h>
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <limits>
 
 namespace acute::io {
 
 namespace {
 
-constexpr double kWidth = 1000.0;  // drawing width in SVG user units
+using detail::svg_fixed;
+
 constexpr const char* kSmallFill = "#fdb863";  // an angle below the min bound
 constexpr const char* kLargeFill = "#d7191c";  // an angle at or above the max bound
-
-std::string fixed(double x, int digits = 2) {
-  char buf[64];
-  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, x, std::chars_format::fixed, digits);
-  (void)ec;
-  return std::string(buf, ptr);
-}
-
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 double angle_deg(const Point2& apex, const Point2& p, const Point2& q) {
   const Point2 u = p - apex, v = q - apex;
@@ -48,28 +28,11 @@ double angle_deg(const Point2& apex, const Point2& p, const Point2& q) {
 }  // namespace
 
 void write_svg(const Mesh& mesh, const std::string& path, const WriteOptions& options) {
-  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, xmax = -xmin, ymax = -xmin;
+  detail::SvgBox box;
   std::size_t n_vertices = 0;
-  for (auto vh : mesh.vertices()) {
-    const Point2 p = point2(mesh, vh);
-    xmin = std::min(xmin, p.x());
-    xmax = std::max(xmax, p.x());
-    ymin = std::min(ymin, p.y());
-    ymax = std::max(ymax, p.y());
-    ++n_vertices;
-  }
-  const bool empty = n_vertices == 0;
-  if (empty) xmin = ymin = 0, xmax = ymax = 1;
-  const double extent = std::max({xmax - xmin, ymax - ymin, std::numeric_limits<double>::min()});
-  const double scale = kWidth / extent;
-  const double margin = 0.02 * kWidth;
-  const double draw_w = (xmax - xmin) * scale, draw_h = (ymax - ymin) * scale;
-  auto X = [&](double x) { return fixed((x - xmin) * scale + margin); };
-  auto Y = [&](double y) { return fixed((ymax - y) * scale + margin); };  // SVG y goes down
-  auto at = [&](VertexHandle vh) {
-    const auto& p = mesh.point(vh);
-    return X(p[0]) + ' ' + Y(p[1]);
-  };
+  for (auto vh : mesh.vertices()) box.add(point2(mesh, vh)), ++n_vertices;
+  const detail::SvgFrame frame(box);
+  auto at = [&](VertexHandle vh) { return frame.at(point2(mesh, vh)); };
 
   // Classify triangles; fills only for bad ones to keep big meshes small.
   std::size_t n_triangles = 0, n_small = 0, n_large = 0;
@@ -100,7 +63,8 @@ void write_svg(const Mesh& mesh, const std::string& path, const WriteOptions& op
       d += 'M' + at(v[0]) + 'L' + at(v[1]) + 'L' + at(v[2]) + 'Z';
     }
   }
-  const double mean_edge = n_triangles ? edge_sum / (3.0 * double(n_triangles)) * scale : kWidth / 10;
+  const double mean_edge =
+      n_triangles ? edge_sum / (3.0 * double(n_triangles)) * frame.scale() : detail::SvgFrame::kDrawWidth / 10;
   const double thin = std::clamp(0.08 * mean_edge, 0.03, 1.0);
   const double bold = std::clamp(3.0 * thin, 0.3, 3.0);
 
@@ -111,48 +75,46 @@ void write_svg(const Mesh& mesh, const std::string& path, const WriteOptions& op
     d += 'M' + at(mesh.from_vertex_handle(heh)) + 'L' + at(mesh.to_vertex_handle(heh));
   }
 
-  const double font = 16.0, line_gap = 1.3 * font;
   std::vector<std::string> legend;
   if (!options.title.empty()) legend.push_back(options.title);
   legend.push_back(std::to_string(n_vertices) + " vertices, " + std::to_string(n_triangles) + " triangles");
   if (n_triangles)
-    legend.push_back("angles from " + fixed(min_angle) + "\u00b0 to " + fixed(max_angle) + "\u00b0");
-  const std::string bounds_small = "angle < " + fixed(options.min_angle_deg, 1) + "\u00b0: ";
-  const std::string bounds_large = "angle \u2265 " + fixed(options.max_angle_deg, 1) + "\u00b0: ";
-  const double legend_top = draw_h + 2 * margin;
-  const double total_h = legend_top + (double(legend.size()) + 2) * line_gap + margin;
-  const double total_w = std::max(draw_w + 2 * margin, 420.0);
+    legend.push_back("angles from " + svg_fixed(min_angle) + "\u00b0 to " + svg_fixed(max_angle) + "\u00b0");
+  const std::string bounds_small = "angle < " + svg_fixed(options.min_angle_deg, 1) + "\u00b0: ";
+  const std::string bounds_large = "angle \u2265 " + svg_fixed(options.max_angle_deg, 1) + "\u00b0: ";
 
   detail::AtomicFile file(path);
   std::ostream& out = file.stream();
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << fixed(total_w) << ' ' << fixed(total_h)
-      << "\" width=\"" << fixed(total_w, 0) << "\" height=\"" << fixed(total_h, 0) << "\">\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  detail::begin_svg(out, frame.page_width(), frame.page_height(legend.size() + 2));
   if (!small_path.empty()) out << "<path fill=\"" << kSmallFill << "\" stroke=\"none\" d=\"" << small_path << "\"/>\n";
   if (!large_path.empty()) out << "<path fill=\"" << kLargeFill << "\" stroke=\"none\" d=\"" << large_path << "\"/>\n";
   if (!edges.empty())
-    out << "<path fill=\"none\" stroke=\"#333\" stroke-width=\"" << fixed(thin, 3)
+    out << "<path fill=\"none\" stroke=\"#333\" stroke-width=\"" << svg_fixed(thin, 3)
         << "\" stroke-linecap=\"round\" d=\"" << edges << "\"/>\n";
   if (!constrained.empty())
-    out << "<path fill=\"none\" stroke=\"black\" stroke-width=\"" << fixed(bold, 3)
+    out << "<path fill=\"none\" stroke=\"black\" stroke-width=\"" << svg_fixed(bold, 3)
         << "\" stroke-linecap=\"round\" d=\"" << constrained << "\"/>\n";
-  out << "<g font-family=\"sans-serif\" font-size=\"" << fixed(font, 0) << "\" fill=\"black\">\n";
-  double y = legend_top + font;
-  for (const auto& text : legend) {
-    out << "<text x=\"" << fixed(margin) << "\" y=\"" << fixed(y) << "\">" << xml_escape(text) << "</text>\n";
-    y += line_gap;
+  if (options.vertex_labels && n_vertices) {
+    // Index in vertex order (the order of the written mesh file, 0-based), beside the vertex.
+    const double size = std::clamp(0.3 * mean_edge, 2.0, 14.0);
+    out << "<g font-family=\"sans-serif\" font-size=\"" << svg_fixed(size, 1) << "\" fill=\"#1f4e9c\" stroke=\"white\" stroke-width=\""
+        << svg_fixed(0.2 * size) << "\" paint-order=\"stroke\">\n";
+    for (auto vh : mesh.vertices()) {
+      const Point2 p = point2(mesh, vh);
+      const double x = frame.page_x(p), y = frame.page_y(p);
+      out << "<circle cx=\"" << svg_fixed(x) << "\" cy=\"" << svg_fixed(y) << "\" r=\"" << svg_fixed(0.15 * size) << "\"/>"
+          << "<text x=\"" << svg_fixed(x + 0.25 * size) << "\" y=\"" << svg_fixed(y - 0.25 * size) << "\">" << vh.idx()
+          << "</text>\n";
+    }
+    out << "</g>\n";
   }
-  const double box = 0.8 * font;
-  out << "<rect x=\"" << fixed(margin) << "\" y=\"" << fixed(y - box) << "\" width=\"" << fixed(box) << "\" height=\""
-      << fixed(box) << "\" fill=\"" << kSmallFill << "\"/>\n"
-      << "<text x=\"" << fixed(margin + 1.5 * box) << "\" y=\"" << fixed(y) << "\">" << xml_escape(bounds_small)
-      << n_small << " triangles</text>\n";
-  y += line_gap;
-  out << "<rect x=\"" << fixed(margin) << "\" y=\"" << fixed(y - box) << "\" width=\"" << fixed(box) << "\" height=\""
-      << fixed(box) << "\" fill=\"" << kLargeFill << "\"/>\n"
-      << "<text x=\"" << fixed(margin + 1.5 * box) << "\" y=\"" << fixed(y) << "\">" << xml_escape(bounds_large)
-      << n_large << " triangles</text>\n";
+  detail::begin_text_group(out);
+  const double y = detail::write_text_lines(out, legend, frame.margin(), frame.legend_top());
+  // No min bound (0, e.g. the keep-vertices repair): its swatch would say nothing.
+  const bool min_bound = options.min_angle_deg > 0;
+  if (min_bound) detail::write_swatch(out, frame.margin(), y, kSmallFill, bounds_small + std::to_string(n_small) + " triangles");
+  detail::write_swatch(out, frame.margin(), min_bound ? y + detail::SvgFrame::kLineGap : y, kLargeFill,
+                       bounds_large + std::to_string(n_large) + " triangles");
   out << "</g>\n</svg>\n";
   file.commit();
 }

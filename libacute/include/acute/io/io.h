@@ -64,6 +64,8 @@ struct WriteOptions {
   double min_angle_deg = 30.0;  ///< for SVG colouring
   double max_angle_deg = 90.0;
   std::string title;            ///< SVG legend title
+  bool vertex_labels = false;   ///< SVG: each vertex's index (0-based, vertex order) beside it
+  double histogram_bin_deg = 5; ///< write_angle_histogram_svg: bin width in degrees, in (0, 180]
 };
 
 /// Writes by extension: .off .obj .ply .vtk .vtu .msh (17 significant digits), .node/.ele (give
@@ -72,6 +74,13 @@ void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& o
 
 /// SVG picture: triangles, constrained edges bold, bad triangles filled, legend with figures.
 void write_svg(const Mesh& mesh, const std::string& path, const WriteOptions& options = {});
+
+/// SVG bar chart of all 3T angles in bins of options.histogram_bin_deg over [0, 180] (180 in the
+/// last bin): the angles below min_angle_deg and those not below max_angle_deg (exactly for 90)
+/// are stacked on top in the colours of write_svg; the bounds are dashed vertical lines. Each bar
+/// is a <rect class="bar" data-count="N">, so the counts sum to 3T. Atomic. Throws IoError, or
+/// InvalidInput for a bin width outside (0, 180].
+void write_angle_histogram_svg(const Mesh& mesh, const std::string& path, const WriteOptions& options = {});
 
 /// Legacy VTK (ASCII UNSTRUCTURED_GRID, version 3.0): POINTS double (z = 0), triangles (cell type
 /// 5), POINT_DATA "marker", CELL_DATA "min_angle" and "max_angle" in degrees. For ParaView/meshio.

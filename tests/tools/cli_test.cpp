@@ -1,0 +1,209 @@
+// The `acute` program run as a user runs it: pictures (mesh, labels, angle histogram, before /
+// after) and the progress line (on a terminal only).
+#include <acute/io/io.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string mesh_file(const std::string& name) { return std::string(ACUTE_MESHES_DIR) + "/" + name; }
+std::string out(const std::string& name) { return std::string(ACUTE_TEST_OUTPUT_DIR) + "/cli_" + name; }
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+struct CliRun {
+  int code = -1;
+  std::string out, err;
+};
+
+/// Runs `acute ARGS` through the shell with stdout and stderr sent to files (not a terminal).
+CliRun acute(const std::string& args, const std::string& name) {
+  const std::string o = out(name + ".stdout"), e = out(name + ".stderr");
+  const std::string command = quoted(ACUTE_CLI) + " " + args + " >" + quoted(o) + " 2>" + quoted(e) + " </dev/null";
+  const int status = std::system(command.c_str());
+  CliRun r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(o);
+  r.err = slurp(e);
+  return r;
+}
+
+/// Runs a shell command, returns its stdout.
+std::string shell(const std::string& command, int* code = nullptr) {
+  std::string text;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return text;
+  char buf[4096];
+  for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) text.append(buf, n);
+  const int status = pclose(pipe);
+  if (code) *code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return text;
+}
+
+/// Parses an SVG with python3's XML parser; returns "ok BARS LABELS" (the sum of the bars'
+/// data-count and the number of vertex labels) or the parser's complaint.
+std::string parse_svg(const std::string& path) {
+  const std::string script =
+      "import sys, xml.etree.ElementTree as ET\n"
+      "ns = '{http://www.w3.org/2000/svg}'\n"
+      "root = ET.parse(sys.argv[1]).getroot()\n"
+      "bars = sum(int(r.get('data-count')) for r in root.iter(ns + 'rect') if r.get('class') == 'bar')\n"
+      "labels = len(root.findall('.//' + ns + 'circle'))\n"
+      "print('ok', bars, labels)\n";
+  const std::string py = out("parse_svg.py");
+  std::ofstream(py) << script;
+  return shell("python3 " + quoted(py) + " " + quoted(path) + " 2>&1");
+}
+
+bool has_python() { return std::system("python3 -c 'import xml.etree.ElementTree' >/dev/null 2>&1") == 0; }
+
+std::size_t n_triangles(const std::string& path) { return acute::io::read_mesh(path).n_faces(); }
+
+/// No trace of the terminal progress line: no carriage return, no escape sequence, no counters.
+void expect_no_progress(const std::string& err, const std::string& context) {
+  EXPECT_EQ(err.find('\r'), std::string::npos) << context << ": " << err;
+  EXPECT_EQ(err.find('\033'), std::string::npos) << context << ": " << err;
+  EXPECT_EQ(err.find("iteration"), std::string::npos) << context << ": " << err;
+  EXPECT_EQ(err.find("bad triangles "), std::string::npos) << context << ": " << err;
+}
+
+TEST(RenderHistogram, WellFormedAndBarsCountEveryAngle) {
+  if (!has_python()) GTEST_SKIP() << "python3 is needed to parse the SVG";
+  // A bad mesh (the bare CDT: small and obtuse angles) and an acute one.
+  ASSERT_EQ(acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_cdt.off")) + " --method cdt -q", "cdt").code, 0);
+  const CliRun a = acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_acute.off")) + " --vertices 600 -q", "acute");
+  ASSERT_LE(a.code, 1) << a.err;
+  for (const std::string mesh : {"A_cdt", "A_acute"})
+    for (const std::string bin : {"5", "7", "180"}) {
+      const std::string svg = out(mesh + "_hist" + bin + ".svg");
+      const CliRun r = acute("render " + quoted(out(mesh + ".off")) + " -o " + quoted(svg) + " --histogram --bin-width " + bin,
+                          "hist");
+      ASSERT_EQ(r.code, 0) << r.err;
+      const std::size_t t = n_triangles(out(mesh + ".off"));
+      ASSERT_GT(t, 0u);
+      EXPECT_EQ(parse_svg(svg), "ok " + std::to_string(3 * t) + " 0\n") << svg;
+      EXPECT_NE(slurp(svg).find("class=\"bound\""), std::string::npos) << "the bounds are drawn";
+    }
+  // The CDT of A has small and obtuse angles: bars in both bad colours.
+  const std::string cdt = slurp(out("A_cdt_hist5.svg"));
+  EXPECT_NE(cdt.find("data-kind=\"small\""), std::string::npos);
+  EXPECT_NE(cdt.find("data-kind=\"large\""), std::string::npos);
+}
+
+TEST(RenderHistogram, RefusesABadBinWidthAndANonSvgOutput) {
+  ASSERT_EQ(acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_cdt2.off")) + " --method cdt -q", "cdt2").code, 0);
+  EXPECT_EQ(acute("render " + quoted(out("A_cdt2.off")) + " -o " + quoted(out("x.svg")) + " --histogram --bin-width 0", "bin0").code, 2);
+  const CliRun r = acute("render " + quoted(out("A_cdt2.off")) + " -o " + quoted(out("x.png")) + " --histogram", "png");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("x.png"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out("x.png")));
+}
+
+TEST(RenderLabels, OneLabelPerVertexOnSmallMeshesAndANoteAboveTheLimit) {
+  if (!has_python()) GTEST_SKIP() << "python3 is needed to parse the SVG";
+  const std::string small = mesh_file("A.1.off");
+  CliRun r = acute("render " + quoted(small) + " -o " + quoted(out("labels.svg")) + " --labels", "labels");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(parse_svg(out("labels.svg")), "ok 0 " + std::to_string(acute::io::read_mesh(small).n_vertices()) + "\n");
+  // A 2,000-vertex mesh is over the limit (500).
+  const CliRun m = acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_big.off")) + " --vertices 2000 -q", "big");
+  ASSERT_LE(m.code, 1) << m.err;
+  r = acute("render " + quoted(out("A_big.off")) + " -o " + quoted(out("labels_big.svg")) + " --labels", "labels_big");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("--labels ignored"), std::string::npos) << r.err;
+  EXPECT_EQ(parse_svg(out("labels_big.svg")), "ok 0 0\n");
+}
+
+TEST(Pictures, RepairWritesDifferentBeforeAndAfterPictures) {
+  const std::string prefix = out("grid_pictures");
+  for (const auto& p : {"_before.svg", "_after.svg", "_before_histogram.svg", "_after_histogram.svg"}) fs::remove(prefix + p);
+  const CliRun r = acute("repair " + quoted(mesh_file("grid.off")) + " -o " + quoted(out("grid_fixed.off")) + " --pictures " +
+                          quoted(prefix) + " --json",
+                      "repair_pictures");
+  ASSERT_LE(r.code, 1) << r.err;
+  for (const auto& p : {"_before.svg", "_after.svg", "_before_histogram.svg", "_after_histogram.svg"}) {
+    ASSERT_TRUE(fs::exists(prefix + p)) << prefix + p;
+    EXPECT_NE(r.out.find(prefix + p), std::string::npos) << "listed in the JSON report";
+  }
+  EXPECT_NE(slurp(prefix + "_before.svg"), slurp(prefix + "_after.svg"));
+  EXPECT_NE(slurp(prefix + "_before_histogram.svg"), slurp(prefix + "_after_histogram.svg"));
+  if (has_python()) {
+    EXPECT_EQ(parse_svg(prefix + "_before_histogram.svg"), "ok " + std::to_string(3 * n_triangles(mesh_file("grid.off"))) + " 0\n");
+    EXPECT_EQ(parse_svg(prefix + "_after_histogram.svg"), "ok " + std::to_string(3 * n_triangles(out("grid_fixed.off"))) + " 0\n");
+    EXPECT_EQ(parse_svg(prefix + "_before.svg"), "ok 0 0\n");
+  }
+}
+
+TEST(Pictures, MeshWritesTheCdtAsBefore) {
+  const std::string prefix = out("A_pictures");
+  const CliRun r = acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_pic.off")) + " --vertices 300 --pictures " +
+                          quoted(prefix),
+                      "mesh_pictures");
+  ASSERT_LE(r.code, 1) << r.err;
+  ASSERT_TRUE(fs::exists(prefix + "_before.svg"));
+  ASSERT_TRUE(fs::exists(prefix + "_after.svg"));
+  EXPECT_NE(slurp(prefix + "_before.svg"), slurp(prefix + "_after.svg"));
+  // The CDT of A.poly: its 29 points, nothing added.
+  EXPECT_NE(slurp(prefix + "_before.svg").find(">29 vertices, "), std::string::npos);
+}
+
+TEST(Pictures, MissingFolderFailsBeforeTheRun) {
+  const CliRun r = acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_nofolder.off")) +
+                          " --pictures /nonexistent-folder/x",
+                      "nofolder");
+  EXPECT_EQ(r.code, 3);
+  EXPECT_NE(r.err.find("/nonexistent-folder"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out("A_nofolder.off")));
+}
+
+TEST(Progress, NeverInStderrThatIsNotATerminal) {
+  CliRun r = acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_p1.off")) + " --vertices 800", "p_mesh");
+  ASSERT_LE(r.code, 1) << r.err;
+  expect_no_progress(r.err, "mesh");
+  r = acute("repair " + quoted(mesh_file("grid.off")) + " -o " + quoted(out("grid_p.off")), "p_repair");
+  ASSERT_LE(r.code, 1) << r.err;
+  expect_no_progress(r.err, "repair");
+  // -v logs phases one per line, still without the terminal line's carriage returns.
+  r = acute("repair " + quoted(mesh_file("grid.off")) + " -o " + quoted(out("grid_pv.off")) + " -v", "p_repair_v");
+  ASSERT_LE(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("acute repair"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\r'), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\033'), std::string::npos) << r.err;
+}
+
+TEST(Progress, ShownOnATerminalUnlessQuiet) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "util-linux `script` is needed for a pseudo-terminal";
+  // script(1) runs the command on a pseudo-terminal and copies what it shows to our stdout.
+  auto on_terminal = [](const std::string& args) {
+    const std::string command = quoted(ACUTE_CLI) + " " + args;
+    return shell("script -qec " + quoted(command) + " /dev/null </dev/null 2>&1");
+  };
+  // A.1.off does not converge (90-degree feet): the repair runs to its 1.5 s limit, long enough
+  // for the line to be redrawn with counts (a few times a second).
+  const std::string shown = on_terminal("repair " + mesh_file("A.1.off") + " -o " + out("A1_tty.off") + " --time-limit 1.5");
+  EXPECT_NE(shown.find("\r\033[Kacute: acute repair"), std::string::npos) << shown;
+  EXPECT_TRUE(std::regex_search(shown, std::regex("bad triangles +[0-9]+ +[0-9]+\\.[0-9] s"))) << shown;
+  EXPECT_NE(shown.find("repair: "), std::string::npos) << "the summary line follows";
+  const std::string quiet = on_terminal("repair " + mesh_file("grid.off") + " -o " + out("grid_tty_q.off") + " -q");
+  EXPECT_EQ(quiet.find("acute repair"), std::string::npos) << quiet;
+  EXPECT_EQ(quiet.find('\033'), std::string::npos) << quiet;
+}
+
+}  // namespace
