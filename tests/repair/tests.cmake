@@ -1,6 +1,7 @@
 acute_add_test(repair_tests
   SOURCES
     repair/angle_bounds_test.cpp
+    repair/joint_relaxation_test.cpp
     repair/region_test.cpp
     repair/repair_test.cpp
   LIBS acute_pipeline acute_io)
