@@ -7,11 +7,8 @@
 #include <acute/refine/refine.h>
 #include <acute/repair/repair.h>
 
-#include "pipeline/corner_protection.h"
-
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <string>
 
 namespace acute {
@@ -63,10 +60,6 @@ void check_options(const MeshOptions& o) {
   if (!(o.gradation >= 1.0)) throw InvalidInput("--gradation must be at least 1");
 }
 
-/// Input sectors narrower than this get an isosceles fan before the CVT (a single triangle there
-/// has all its angles in bounds; two or more would need angles below the sector's half).
-constexpr double kProtectedSectorDeg = 60.0;
-
 /// Target edge length from --size or --vertices (equilateral density: N = 2A / (sqrt(3) h^2)).
 double target_edge(const MeshOptions& o, double area) {
   if (o.size > 0) return o.size;
@@ -111,23 +104,13 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       if (options.method == Method::Acute) {
         // The repair does not need a converged CVT, only well-spread vertices: a short optimisation.
         cp.lbfgs_iterations = 40;
-        cp.lfs_factor = std::getenv("ACUTE_LFS") ? std::atof(std::getenv("ACUTE_LFS")) : 0.7;  // room for interior vertices in strips between input points
+        cp.lfs_factor = 0.7;  // room for interior vertices in strips between input points
         cp.move_tolerance = 3e-3;
       }
       if (options.observer)
         cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy}); };
-      // Narrow input corners get an isosceles fan first (cut points and a chord): the repair cannot
-      // reliably build one around a fixed apex.
-      detail::CornerProtection protection;
-      if (options.method == Method::Acute && !std::getenv("ACUTE_NO_PROTECT")) {
-        protection = detail::protect_narrow_corners(domain, result.mesh, kProtectedSectorDeg, target_edge(options, mesh_area(result.mesh)));
-        if (protection.corners > 0)
-          result.notes.push_back(std::to_string(protection.sectors) + " narrow input sector(s) at " + std::to_string(protection.corners) +
-                                 " corner(s) covered by an isosceles fan");
-      }
-      const Domain& start_domain = protection.corners > 0 ? protection.domain : domain;
       try {
-        CvtResult cvt = cvt_mesh(start_domain, cp);
+        CvtResult cvt = cvt_mesh(domain, cp);
         result.mesh = std::move(cvt.mesh);
         result.iterations = cvt.iterations;
       } catch (const InvalidInput& e) {

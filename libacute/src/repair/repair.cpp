@@ -323,7 +323,7 @@ class Repairer {
     expand(region.sub, region.forced, level1);
     // Where one-vertex moves are stuck, the best few outcomes also get a joint relaxation.
     std::sort(level1.begin(), level1.end(), [](const Outcome& a, const Outcome& b) { return a.score < b.score; });
-    for (std::size_t i = 0; i < std::min<std::size_t>(std::getenv("ACUTE_NO_JOINT") ? 0 : 3, level1.size()); ++i) {
+    for (std::size_t i = 0; i < std::min<std::size_t>(3, level1.size()); ++i) {
       Outcome& o = level1[i];
       if (o.score.bad == 0 && o.score.infeasible == 0) break;
       Mesh relaxed = o.mesh;
