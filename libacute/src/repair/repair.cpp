@@ -353,6 +353,7 @@ class Repairer {
   /// Applies each candidate operation to a copy of sub0 (then relocation) and collects the results.
   void expand(const Mesh& sub0, const std::vector<bool>& forced, std::vector<Outcome>& out) {
     candidate_ = 0;
+    bool joint_first = false;  // candidates whose connectivity Delaunay restoration would undo
     auto attempt = [&](auto&& operation) {
       ++candidate_;
       Mesh sub = sub0;
@@ -363,6 +364,7 @@ class Repairer {
           throw InternalError("repair: candidate " + std::to_string(candidate_) + " changed the region boundary: " +
                               std::to_string(boundary_edges(sub0)) + " -> " + std::to_string(boundary_edges(sub)) + " edges");
       }
+      if (joint_first) relax_sub(sub, forced);
       smooth_sub(sub, forced, 3);
       const Score s = score(sub, forced);
       if (trace_) std::fprintf(stderr, "    candidate %d: bad %zu worst %.4f\n", candidate_, s.bad, s.worst);
@@ -445,6 +447,21 @@ class Repairer {
         if (!heh.is_valid()) return false;
         return split_edge(sub, sub.edge_handle(heh), 0.5 * (point2(sub, ends[0]) + point2(sub, ends[1]))).is_valid();
       });
+
+    // Flip each link edge of the vertex with the large angle: it gains a triangle (its neighbour
+    // across loses one). The joint relaxation runs before any Delaunay restoration, which would
+    // flip the edge back before the vertices had moved.
+    joint_first = true;
+    for (const auto& ends : link)
+      attempt([&, ends](Mesh& sub) {
+        const auto heh = sub.find_halfedge(ends[0], ends[1]);
+        if (!heh.is_valid()) return false;
+        const EdgeHandle eh = sub.edge_handle(heh);
+        if (sub.data(eh).frozen || can_flip(sub, eh) != OpVerdict::Ok) return false;
+        flip(sub, eh);
+        return true;
+      });
+    joint_first = false;
 
     // Compound: split every splittable edge of the worst face at its midpoint (local refinement for
     // clusters that no single insertion improves, e.g. right triangles between input points).
