@@ -23,7 +23,10 @@ struct RepairMeshProgress {
 
 /// The start of the required-points repair.
 enum class RequiredStart {
-  Auto,    ///< Cdt, then Refine, then Cvt until one meets the bound (fewest Steiner points first)
+  /// With allow_right: the dedicated non-obtuse Steiner triangulation (non_obtuse_triangulation,
+  /// exact rationals), the starts below only if it fails. Without: Cdt, then Refine, then Cvt
+  /// until one meets the bound (fewest Steiner points first)
+  Auto,
   Cdt,     ///< the bare constrained Delaunay triangulation of the points
   Refine,  ///< Delaunay refinement of it (min angle 20)
   Cvt      ///< the CVT mesh with every input point fixed
@@ -73,7 +76,10 @@ struct RepairMeshResult {
   std::size_t n_right_exact = 0;   ///< triangles with an exactly right angle
   double min_angle_deg = 0, max_angle_deg = 0;
   int iterations = 0;
-  std::string start;            ///< required points: the start that was kept ("cdt", "refine", "cvt")
+  std::string start;            ///< required points: the start that was kept ("non-obtuse", "cdt", "refine", "cvt")
+  /// Exact coordinates ("p" or "p/q") of every mesh vertex by index when the mesh holds rational
+  /// points (the non-obtuse mode); empty when the doubles are the points. Pass to the io writers.
+  std::vector<std::array<std::string, 2>> exact_coordinates;
   std::vector<BadTriangle> remaining;  ///< first bad triangles left (up to 100)
   std::vector<std::string> notes;
 };

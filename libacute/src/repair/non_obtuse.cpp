@@ -1,0 +1,345 @@
+#include <acute/repair/non_obtuse.h>
+
+#include "repair/exact_triangulation.h"
+
+#include <acute/delaunay/cdt.h>
+#include <acute/mesh/segments.h>
+
+#include <algorithm>
+#include <chrono>
+#include <random>
+#include <cstdio>
+#include <cstdlib>
+
+namespace acute {
+
+namespace {
+
+using exact::Q;
+using exact::Triangulation;
+using exact::XPoint;
+
+using Clock = std::chrono::steady_clock;
+
+/// Bits of a rational (numerator + denominator): Steiner points built from Steiner points grow.
+std::size_t bits(const Q& q) {
+  return mpz_sizeinbase(q.get_num_mpz_t(), 2) + mpz_sizeinbase(q.get_den_mpz_t(), 2);
+}
+
+/// Above this, a point that need not be exact (off the segments) is rounded to doubles.
+constexpr std::size_t kMaxBits = 600;
+
+XPoint rounded(const XPoint& p) { return XPoint(Q(p.dx), Q(p.dy)); }
+
+struct Candidate {
+  enum Kind { EdgeSplit, Free } kind;
+  int tri = -1, edge = -1;  ///< EdgeSplit: the edge; Free: where the walk starts
+  XPoint p;
+};
+
+class NonObtuseSolver {
+ public:
+  NonObtuseSolver(Triangulation& tr, const NonObtuseParams& params, Clock::time_point deadline)
+      : tr_(tr), params_(params), deadline_(deadline), rng_(params.seed) {}
+
+  bool out_of_time() const {
+    return Clock::now() > deadline_ || (params_.cancel && params_.cancel());
+  }
+
+  /// Candidate points that could remove the obtuse angle of triangle t.
+  std::vector<Candidate> candidates(int t) const {
+    std::vector<Candidate> out;
+    const int k = tr_.obtuse_corner(t);
+    if (k < 0) return out;
+    const auto& tri = tr_.tri(t);
+    const XPoint& c = tr_.point(tri.v[k]);
+    const XPoint& a = tr_.point(tri.v[(k + 1) % 3]);
+    const XPoint& b = tr_.point(tri.v[(k + 2) % 3]);
+    // Foot of the altitude from the obtuse corner: two right triangles on this side.
+    const Q abx = b.x - a.x, aby = b.y - a.y;
+    const Q s = ((c.x - a.x) * abx + (c.y - a.y) * aby) / (abx * abx + aby * aby);
+    XPoint foot(a.x + s * abx, a.y + s * aby);
+    if (tri.seg[k] >= 0) {
+      out.push_back({Candidate::EdgeSplit, t, k, foot});
+    } else {
+      if (bits(foot.x) + bits(foot.y) > 2 * kMaxBits) {
+        // Rounded, and pushed a hair away from c so both angles at the foot stay below 90.
+        const double ux = foot.dx - c.dx, uy = foot.dy - c.dy;
+        foot = XPoint(Q(foot.dx + 1e-9 * ux), Q(foot.dy + 1e-9 * uy));
+        out.push_back({Candidate::Free, t, -1, foot});
+      } else {
+        out.push_back({Candidate::EdgeSplit, t, k, foot});
+      }
+      // Circumcentre (beyond edge ab for an obtuse triangle), rounded: it need not be exact.
+      const double ax = a.dx - c.dx, ay = a.dy - c.dy, bx = b.dx - c.dx, by = b.dy - c.dy;
+      const double d = 2 * (ax * by - ay * bx);
+      if (d != 0) {
+        const double la = ax * ax + ay * ay, lb = bx * bx + by * by;
+        const double ox = c.dx + (by * la - ay * lb) / d, oy = c.dy + (ax * lb - bx * la) / d;
+        if (std::isfinite(ox) && std::isfinite(oy)) out.push_back({Candidate::Free, tri.n[k], -1, XPoint(Q(ox), Q(oy))});
+      }
+    }
+    if (tri.seg[k] < 0) ray_candidates(t, k, out);
+    // Midpoint of the longest edge (on a segment: exact), a robust last choice.
+    XPoint mid((a.x + b.x) / 2, (a.y + b.y) / 2);
+    if (tri.seg[k] < 0 && bits(mid.x) + bits(mid.y) > 2 * kMaxBits) mid = rounded(mid);
+    out.push_back({Candidate::EdgeSplit, t, k, mid});
+    if (tri.seg[k] < 0 && !(mid.x == (a.x + b.x) / 2 && mid.y == (a.y + b.y) / 2)) out.back().kind = Candidate::Free;
+    return out;
+  }
+
+  /// The altitude from the obtuse corner c of t, continued across edge k until it meets a
+  /// segment: where it meets it, and the foot of the perpendicular from c on that segment edge
+  /// (right angles against the segment, as in a rectangular partition).
+  void ray_candidates(int t, int k, std::vector<Candidate>& out) const {
+    const auto& tri0 = tr_.tri(t);
+    const XPoint& c = tr_.point(tri0.v[k]);
+    const XPoint& a = tr_.point(tri0.v[(k + 1) % 3]);
+    const XPoint& b = tr_.point(tri0.v[(k + 2) % 3]);
+    // Direction: perpendicular to ab, away from c.
+    const Q dx = -(b.y - a.y), dy = b.x - a.x;  // left normal of ab; c is on the left (ccw)
+    const Q ex = -dx, ey = -dy;                  // so go right
+    auto cross = [&](const XPoint& p) -> Q { return ex * (p.y - c.y) - ey * (p.x - c.x); };
+    int cur = tri0.n[k];
+    int ea = tri0.v[(k + 2) % 3], eb = tri0.v[(k + 1) % 3];  // entry edge of cur (as seen from cur)
+    for (int step = 0; step < 64 && cur >= 0; ++step) {
+      const auto& u = tr_.tri(cur);
+      int exit = -1;
+      for (int m = 0; m < 3; ++m) {
+        const int x = u.v[(m + 1) % 3], y = u.v[(m + 2) % 3];
+        if ((x == ea && y == eb) || (x == eb && y == ea)) continue;
+        const int sx = sgn(cross(tr_.point(x))), sy = sgn(cross(tr_.point(y)));
+        if (sx == 0 || sy == 0) return;  // through a vertex
+        if (sx != sy) {
+          // The ray leaves through (x, y) only if that crossing is ahead of c.
+          exit = m;
+          break;
+        }
+      }
+      if (exit < 0) return;
+      const int x = u.v[(exit + 1) % 3], y = u.v[(exit + 2) % 3];
+      if (u.seg[exit] >= 0) {
+        const XPoint &px = tr_.point(x), &py = tr_.point(y);
+        const Q cx = cross(px), cy = cross(py);
+        const Q s = cx / (cx - cy);
+        XPoint hit(px.x + s * (py.x - px.x), px.y + s * (py.y - px.y));
+        if (bits(hit.x) + bits(hit.y) <= 2 * kMaxBits) out.push_back({Candidate::EdgeSplit, cur, exit, hit});
+        const Q sx = py.x - px.x, sy = py.y - px.y;
+        const Q r = ((c.x - px.x) * sx + (c.y - px.y) * sy) / (sx * sx + sy * sy);
+        if (r > 0 && r < 1) {
+          XPoint foot(px.x + r * sx, px.y + r * sy);
+          if (bits(foot.x) + bits(foot.y) <= 2 * kMaxBits) out.push_back({Candidate::EdgeSplit, cur, exit, foot});
+        }
+        return;
+      }
+      ea = x;
+      eb = y;
+      cur = u.n[exit];
+    }
+  }
+
+  /// Applies a candidate (inside the open transaction). Returns false when it cannot be inserted.
+  bool apply(const Candidate& c) {
+    if (c.kind == Candidate::EdgeSplit) return tr_.split_edge(c.tri, c.edge, c.p) >= 0;
+    if (c.tri < 0) return false;
+    return tr_.insert(c.p, c.tri) >= 0;
+  }
+
+  /// Change in the number of obtuse triangles made by the open transaction.
+  int obtuse_delta() const {
+    int before = 0, after = 0;
+    for (const auto& old : tr_.touched_originals())
+      if (old.alive && tr_.is_obtuse(old)) ++before;
+    for (int t : tr_.touched())
+      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) ++after;
+    return after - before;
+  }
+
+  /// Inserts the best candidate for obtuse triangle t. False when none could be inserted.
+  bool fix(int t) {
+    const auto cands = candidates(t);
+    int best = -1, best_delta = 1 << 30;
+    for (std::size_t i = 0; i < cands.size(); ++i) {
+      tr_.begin();
+      const bool ok = apply(cands[i]);
+      const int delta = ok ? obtuse_delta() : (1 << 30);
+      tr_.rollback();
+      if (ok && delta < best_delta) best = static_cast<int>(i), best_delta = delta;
+    }
+    if (best < 0) return false;
+    if (std::getenv("ACUTE_NO_DEBUG2")) {
+      const auto& c = cands[static_cast<std::size_t>(best)];
+      std::fprintf(stderr, "fix %d: cand %d/%zu kind %d at (%g, %g) delta %d\n", t, best, cands.size(), c.kind, c.p.dx, c.p.dy, best_delta);
+    }
+    tr_.begin();
+    apply(cands[static_cast<std::size_t>(best)]);
+    tr_.commit();
+    return true;
+  }
+
+  /// Refinement: obtuse triangles fixed one by one until none is left or the caps are hit.
+  bool refine(std::size_t max_steiner, bool shuffled) {
+    std::vector<int> queue;
+    for (int t = 0; t < tr_.n_tris(); ++t)
+      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) queue.push_back(t);
+    if (shuffled) std::shuffle(queue.begin(), queue.end(), rng_);
+    std::size_t head = 0;
+    while (true) {
+      if (head == queue.size()) {
+        queue.clear();
+        head = 0;
+        for (int t = 0; t < tr_.n_tris(); ++t)
+          if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) queue.push_back(t);
+        if (queue.empty()) return true;
+      }
+      const int t = queue[head++];
+      if (!tr_.tri(t).alive || !tr_.is_obtuse(tr_.tri(t))) continue;
+      if (tr_.n_steiner() >= max_steiner || out_of_time()) return false;
+      const std::size_t first_new = static_cast<std::size_t>(tr_.n_tris());
+      std::vector<int> changed;
+      if (std::getenv("ACUTE_NO_DEBUG") && tr_.n_steiner() % 50 == 0)
+        std::fprintf(stderr, "steiner %zu obtuse %zu tris %d\n", tr_.n_steiner(), tr_.n_obtuse(), tr_.n_tris());
+      if (!fix(t)) continue;
+      for (int u : tr_.last_touched()) changed.push_back(u);
+      for (int u : changed)
+        if (tr_.tri(u).alive && tr_.is_obtuse(tr_.tri(u))) queue.push_back(u);
+      (void)first_new;
+    }
+  }
+
+  /// Tries to remove Steiner point v keeping every triangle non-obtuse.
+  bool try_remove(int v) {
+    tr_.begin();
+    if (!tr_.remove_vertex(v)) {
+      tr_.rollback();
+      return false;
+    }
+    for (int t : tr_.touched())
+      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) {
+        tr_.rollback();
+        return false;
+      }
+    tr_.commit();
+    return true;
+  }
+
+  /// Tries to replace Steiner points v and w by one new point (net one fewer).
+  bool try_merge(int v, int w) {
+    tr_.begin();
+    if (!tr_.remove_vertex(v) || !tr_.remove_vertex(w)) {
+      tr_.rollback();
+      return false;
+    }
+    std::vector<int> bad;
+    for (int t : tr_.touched())
+      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) bad.push_back(t);
+    if (bad.empty()) {
+      tr_.commit();
+      return true;
+    }
+    if (bad.size() > 4) {
+      tr_.rollback();
+      return false;
+    }
+    // One insertion must fix everything the two removals broke.
+    std::vector<Candidate> cands;
+    for (int t : bad)
+      for (auto& c : candidates(t)) cands.push_back(std::move(c));
+    for (const auto& c : cands) {
+      tr_.nest();
+      bool ok = apply(c);
+      if (ok)
+        for (int t : tr_.touched())
+          if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) {
+            ok = false;
+            break;
+          }
+      if (ok) {
+        tr_.commit();
+        return true;
+      }
+      tr_.unnest();
+    }
+    tr_.rollback();
+    return false;
+  }
+
+  /// Local search: removals, then pairs replaced by one point, while anything improves.
+  void prune() {
+    for (int pass = 0; pass < 20; ++pass) {
+      bool progress = false;
+      std::vector<int> steiner = tr_.steiner_vertices();
+      std::shuffle(steiner.begin(), steiner.end(), rng_);
+      for (int v : steiner) {
+        if (out_of_time()) return;
+        if (tr_.alive_point(v) && try_remove(v)) progress = true;
+      }
+      steiner = tr_.steiner_vertices();
+      std::shuffle(steiner.begin(), steiner.end(), rng_);
+      for (int v : steiner) {
+        if (out_of_time()) return;
+        if (!tr_.alive_point(v)) continue;
+        for (int w : tr_.neighbours(v)) {
+          if (w == v || !tr_.alive_point(w) || tr_.is_required(w)) continue;
+          if (try_merge(v, w)) {
+            progress = true;
+            break;
+          }
+        }
+      }
+      if (!progress) return;
+    }
+  }
+
+ private:
+  Triangulation& tr_;
+  const NonObtuseParams& params_;
+  Clock::time_point deadline_;
+  std::mt19937 rng_;
+};
+
+}  // namespace
+
+NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtuseParams& params) {
+  const auto t0 = Clock::now();
+  const auto deadline = params.time_limit_s > 0
+                            ? t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(params.time_limit_s))
+                            : Clock::time_point::max();
+  const Mesh cdt = build_cdt(domain);
+  const std::size_t cap = params.max_steiner > 0 ? params.max_steiner : 60 * domain.points.size() + 2000;
+
+  NonObtuseResult result;
+  Triangulation best = Triangulation::from_mesh(cdt);
+  bool best_ok = false;
+  // Refinement strategies in turn (later ones only when an earlier one got stuck): each one
+  // starts from the CDT; the first that ends non-obtuse is pruned.
+  for (unsigned attempt = 0; attempt < 3; ++attempt) {
+    Triangulation tr = Triangulation::from_mesh(cdt);
+    NonObtuseParams p = params;
+    p.seed = params.seed + attempt;
+    const auto left = deadline - Clock::now();
+    const auto share = deadline == Clock::time_point::max() ? deadline : Clock::now() + left / 2;
+    NonObtuseSolver solver(tr, p, share);
+    ++result.rounds;
+    const bool ok = solver.refine(cap, attempt > 0);
+    if (ok) {
+      result.n_refined = tr.n_steiner();
+      NonObtuseSolver pruner(tr, p, deadline);
+      pruner.prune();
+      best = std::move(tr);
+      best_ok = true;
+      break;
+    }
+    if (attempt == 0 || tr.n_obtuse() < best.n_obtuse()) best = std::move(tr);
+    if (Clock::now() > deadline || (params.cancel && params.cancel())) break;
+  }
+  (void)best_ok;
+  result.mesh = best.to_mesh(cdt, &result.exact);
+  result.n_steiner = best.n_steiner();
+  result.n_obtuse = best.n_obtuse();
+  result.n_right = best.n_right();
+  result.ok = result.n_obtuse == 0;
+  return result;
+}
+
+}  // namespace acute
