@@ -229,6 +229,28 @@ bool Triangulation::fan(int v, std::vector<int>& out, bool& open) const {
   return false;
 }
 
+std::vector<int> Triangulation::fan_of(int v) const {
+  std::vector<int> f;
+  bool open = false;
+  if (!fan(v, f, open)) f.clear();
+  return f;
+}
+
+std::vector<std::pair<int, int>> Triangulation::spokes(int v) const {
+  std::vector<std::pair<int, int>> out;
+  for (int t : fan_of(v)) {
+    const Tri& tri = tris_[static_cast<std::size_t>(t)];
+    int i = 0;
+    while (tri.v[i] != v) ++i;
+    const int x = tri.v[(i + 1) % 3], y = tri.v[(i + 2) % 3];
+    if (std::find_if(out.begin(), out.end(), [&](const auto& e) { return e.first == x; }) == out.end())
+      out.emplace_back(x, tri.seg[(i + 2) % 3]);
+    if (std::find_if(out.begin(), out.end(), [&](const auto& e) { return e.first == y; }) == out.end())
+      out.emplace_back(y, tri.seg[(i + 1) % 3]);
+  }
+  return out;
+}
+
 std::vector<int> Triangulation::neighbours(int v) const {
   std::vector<int> f, out;
   bool open = false;

@@ -61,6 +61,9 @@ class Triangulation {
   std::size_t n_steiner() const { return n_steiner_; }
   std::vector<int> steiner_vertices() const;
   std::vector<int> neighbours(int v) const;
+  std::vector<int> fan_of(int v) const;
+  /// Edges at v: (other end, segment or -1).
+  std::vector<std::pair<int, int>> spokes(int v) const;
 
   // Operators (call inside a transaction). They return the new vertex or -1 / false, and leave
   // the triangulation constrained Delaunay (Lawson flips).

@@ -88,35 +88,48 @@ class NonObtuseSolver {
     return out;
   }
 
-  /// The altitude from the obtuse corner c of t, continued across edge k until it meets a
-  /// segment: where it meets it, and the foot of the perpendicular from c on that segment edge
-  /// (right angles against the segment, as in a rectangular partition).
+  /// Rays from the obtuse corner c of t until they meet a segment: the altitude (perpendicular
+  /// to edge k), and along and perpendicular to each segment edge at c. Candidates: where a ray
+  /// meets the segment, and the foot of the perpendicular from c on it (right angles against
+  /// segments, as in a rectangular partition of an orthogonal polygon).
   void ray_candidates(int t, int k, std::vector<Candidate>& out) const {
     const auto& tri0 = tr_.tri(t);
-    const XPoint& c = tr_.point(tri0.v[k]);
+    const int cv = tri0.v[k];
+    const XPoint& c = tr_.point(cv);
     const XPoint& a = tr_.point(tri0.v[(k + 1) % 3]);
     const XPoint& b = tr_.point(tri0.v[(k + 2) % 3]);
-    // Direction: perpendicular to ab, away from c.
-    const Q dx = -(b.y - a.y), dy = b.x - a.x;  // left normal of ab; c is on the left (ccw)
-    const Q ex = -dx, ey = -dy;                  // so go right
+    std::vector<std::pair<Q, Q>> dirs;
+    dirs.emplace_back(b.y - a.y, -(b.x - a.x));  // right normal of ab: away from c
+    for (const auto& [w, seg] : tr_.spokes(cv)) {
+      if (seg < 0) continue;
+      const XPoint& pw = tr_.point(w);
+      const Q ux = pw.x - c.x, uy = pw.y - c.y;
+      dirs.emplace_back(-ux, -uy);
+      dirs.emplace_back(-uy, ux);
+      dirs.emplace_back(uy, -ux);
+    }
+    for (const auto& [ex, ey] : dirs) shoot(cv, ex, ey, out);
+  }
+
+  void shoot(int cv, const Q& ex, const Q& ey, std::vector<Candidate>& out) const {
+    const XPoint& c = tr_.point(cv);
     auto cross = [&](const XPoint& p) -> Q { return ex * (p.y - c.y) - ey * (p.x - c.x); };
-    int cur = tri0.n[k];
-    int ea = tri0.v[(k + 2) % 3], eb = tri0.v[(k + 1) % 3];  // entry edge of cur (as seen from cur)
-    for (int step = 0; step < 64 && cur >= 0; ++step) {
-      const auto& u = tr_.tri(cur);
-      int exit = -1;
-      for (int m = 0; m < 3; ++m) {
-        const int x = u.v[(m + 1) % 3], y = u.v[(m + 2) % 3];
-        if ((x == ea && y == eb) || (x == eb && y == ea)) continue;
-        const int sx = sgn(cross(tr_.point(x))), sy = sgn(cross(tr_.point(y)));
-        if (sx == 0 || sy == 0) return;  // through a vertex
-        if (sx != sy) {
-          // The ray leaves through (x, y) only if that crossing is ahead of c.
-          exit = m;
-          break;
-        }
+    // The triangle around c whose wedge holds the direction.
+    int cur = -1, exit = -1;
+    for (int f : tr_.fan_of(cv)) {
+      const auto& u = tr_.tri(f);
+      int i = 0;
+      while (u.v[i] != cv) ++i;
+      const int sx = sgn(cross(tr_.point(u.v[(i + 1) % 3]))), sy = sgn(cross(tr_.point(u.v[(i + 2) % 3])));
+      if (sx < 0 && sy > 0) {  // x right of the ray, y left: the ray runs between them
+        cur = f;
+        exit = i;
+        break;
       }
-      if (exit < 0) return;
+    }
+    if (cur < 0) return;
+    for (int step = 0; step < 64; ++step) {
+      const auto& u = tr_.tri(cur);
       const int x = u.v[(exit + 1) % 3], y = u.v[(exit + 2) % 3];
       if (u.seg[exit] >= 0) {
         const XPoint &px = tr_.point(x), &py = tr_.point(y);
@@ -132,9 +145,26 @@ class NonObtuseSolver {
         }
         return;
       }
-      ea = x;
-      eb = y;
-      cur = u.n[exit];
+      const int next = u.n[exit];
+      if (next < 0) return;
+      const auto& w = tr_.tri(next);
+      int m = 0;
+      while (w.v[m] == x || w.v[m] == y) ++m;  // the far corner of next
+      const int s = sgn(cross(tr_.point(w.v[m])));
+      if (s == 0) return;  // through a vertex
+      // Entered through (y, x) seen from next; leave through the edge the ray crosses.
+      const int far = w.v[m];
+      int leave = -1;
+      for (int j = 0; j < 3; ++j) {
+        const int p = w.v[(j + 1) % 3], q = w.v[(j + 2) % 3];
+        if ((p == x && q == y) || (p == y && q == x)) continue;
+        const int sp = p == far ? s : sgn(cross(tr_.point(p)));
+        const int sq = q == far ? s : sgn(cross(tr_.point(q)));
+        if (sp != sq) leave = j;
+      }
+      if (leave < 0) return;
+      cur = next;
+      exit = leave;
     }
   }
 
@@ -145,31 +175,44 @@ class NonObtuseSolver {
     return tr_.insert(c.p, c.tri) >= 0;
   }
 
-  /// Change in the number of obtuse triangles made by the open transaction.
-  int obtuse_delta() const {
-    int before = 0, after = 0;
+  /// How far past 90 degrees the largest angle of an obtuse triangle is (doubles; a tie-break).
+  double excess(const exact::Tri& t) const {
+    double worst = 0;
+    for (int k = 0; k < 3; ++k) {
+      const XPoint &o = tr_.point(t.v[k]), &p = tr_.point(t.v[(k + 1) % 3]), &q = tr_.point(t.v[(k + 2) % 3]);
+      const double ax = p.dx - o.dx, ay = p.dy - o.dy, bx = q.dx - o.dx, by = q.dy - o.dy;
+      worst = std::max(worst, std::atan2(std::abs(ax * by - ay * bx), ax * bx + ay * by));
+    }
+    return std::max(0.0, worst - 1.5707963267948966);
+  }
+
+  /// Change made by the open transaction: obtuse triangles, then their total excess.
+  std::pair<int, double> obtuse_delta() const {
+    int count = 0;
+    double ex = 0;
     for (const auto& old : tr_.touched_originals())
-      if (old.alive && tr_.is_obtuse(old)) ++before;
+      if (old.alive && tr_.is_obtuse(old)) --count, ex -= excess(old);
     for (int t : tr_.touched())
-      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) ++after;
-    return after - before;
+      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) ++count, ex += excess(tr_.tri(t));
+    return {count, ex};
   }
 
   /// Inserts the best candidate for obtuse triangle t. False when none could be inserted.
   bool fix(int t) {
     const auto cands = candidates(t);
-    int best = -1, best_delta = 1 << 30;
+    int best = -1;
+    std::pair<int, double> best_delta{1 << 30, 0.0};
     for (std::size_t i = 0; i < cands.size(); ++i) {
       tr_.begin();
       const bool ok = apply(cands[i]);
-      const int delta = ok ? obtuse_delta() : (1 << 30);
+      const auto delta = ok ? obtuse_delta() : std::pair<int, double>{1 << 30, 0.0};
       tr_.rollback();
       if (ok && delta < best_delta) best = static_cast<int>(i), best_delta = delta;
     }
     if (best < 0) return false;
     if (std::getenv("ACUTE_NO_DEBUG2")) {
       const auto& c = cands[static_cast<std::size_t>(best)];
-      std::fprintf(stderr, "fix %d: cand %d/%zu kind %d at (%g, %g) delta %d\n", t, best, cands.size(), c.kind, c.p.dx, c.p.dy, best_delta);
+      std::fprintf(stderr, "fix %d: cand %d/%zu kind %d at (%g, %g) delta %d %g\n", t, best, cands.size(), c.kind, c.p.dx, c.p.dy, best_delta.first, best_delta.second);
     }
     tr_.begin();
     apply(cands[static_cast<std::size_t>(best)]);
