@@ -226,6 +226,8 @@ class NonObtuseSolver {
     for (int t = 0; t < tr_.n_tris(); ++t)
       if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) queue.push_back(t);
     if (shuffled) std::shuffle(queue.begin(), queue.end(), rng_);
+    const std::size_t initial = queue.size();
+    std::size_t fixes = 0;
     std::size_t head = 0;
     while (true) {
       if (head == queue.size()) {
@@ -238,6 +240,7 @@ class NonObtuseSolver {
       const int t = queue[head++];
       if (!tr_.tri(t).alive || !tr_.is_obtuse(tr_.tri(t))) continue;
       if (tr_.n_steiner() >= max_steiner || out_of_time()) return false;
+      if (++fixes % 32 == 0 && tr_.n_obtuse() > 2 * initial + 10) return false;  // diverging
       const std::size_t first_new = static_cast<std::size_t>(tr_.n_tris());
       std::vector<int> changed;
       if (std::getenv("ACUTE_NO_DEBUG") && tr_.n_steiner() % 50 == 0)
@@ -356,25 +359,34 @@ NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtusePa
   bool best_ok = false;
   // Refinement strategies in turn (later ones only when an earlier one got stuck): each one
   // starts from the CDT; the first that ends non-obtuse is pruned.
-  for (unsigned attempt = 0; attempt < 3; ++attempt) {
+  // Greedy refinements from the CDT, each in a different order (the order matters a lot: a
+  // cascade of altitude feet either closes quickly or runs away, which ends the attempt), each
+  // success pruned; the best kept. Time: attempts until half the budget, pruning the rest.
+  const bool timed = deadline != Clock::time_point::max();
+  int successes = 0;
+  for (unsigned attempt = 0; attempt < 400; ++attempt) {
+    const auto now = Clock::now();
+    if (attempt > 0 && (now > deadline || (params.cancel && params.cancel()))) break;
+    if (successes >= 4 || (successes >= 1 && (!timed || now - t0 > (deadline - t0) / 2))) break;
     Triangulation tr = Triangulation::from_mesh(cdt);
     NonObtuseParams p = params;
     p.seed = params.seed + attempt;
-    const auto left = deadline - Clock::now();
-    const auto share = deadline == Clock::time_point::max() ? deadline : Clock::now() + left / 2;
+    const auto share = timed ? now + (deadline - now) / 2 : deadline;
     NonObtuseSolver solver(tr, p, share);
     ++result.rounds;
-    const bool ok = solver.refine(cap, attempt > 0);
-    if (ok) {
-      result.n_refined = tr.n_steiner();
-      NonObtuseSolver pruner(tr, p, deadline);
+    if (solver.refine(cap, attempt > 0)) {
+      const std::size_t refined = tr.n_steiner();
+      NonObtuseSolver pruner(tr, p, timed ? Clock::now() + (deadline - Clock::now()) / 2 : deadline);
       pruner.prune();
-      best = std::move(tr);
+      if (!best_ok || tr.n_steiner() < best.n_steiner()) {
+        result.n_refined = refined;
+        best = std::move(tr);
+      }
       best_ok = true;
-      break;
+      ++successes;
+    } else if (!best_ok && (attempt == 0 || tr.n_obtuse() < best.n_obtuse())) {
+      best = std::move(tr);
     }
-    if (attempt == 0 || tr.n_obtuse() < best.n_obtuse()) best = std::move(tr);
-    if (Clock::now() > deadline || (params.cancel && params.cancel())) break;
   }
   (void)best_ok;
   result.mesh = best.to_mesh(cdt, &result.exact);
