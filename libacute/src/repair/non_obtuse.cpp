@@ -197,23 +197,76 @@ class NonObtuseSolver {
     return {count, ex};
   }
 
-  /// Inserts the best candidate for obtuse triangle t. False when none could be inserted.
-  bool fix(int t) {
-    const auto cands = candidates(t);
-    int best = -1;
-    std::pair<int, double> best_delta{1 << 30, 0.0};
-    for (std::size_t i = 0; i < cands.size(); ++i) {
+  using Score = std::pair<int, double>;
+  static constexpr int kNone = 1 << 30;
+
+  /// Scores of t's candidates (inside no transaction; each tried and undone).
+  std::vector<Score> scores(const std::vector<Candidate>& cands) {
+    std::vector<Score> out;
+    for (const auto& c : cands) {
       tr_.begin();
-      const bool ok = apply(cands[i]);
-      const auto delta = ok ? obtuse_delta() : std::pair<int, double>{1 << 30, 0.0};
+      const bool ok = apply(c);
+      out.push_back(ok ? obtuse_delta() : Score{kNone, 0.0});
       tr_.rollback();
-      if (ok && delta < best_delta) best = static_cast<int>(i), best_delta = delta;
     }
+    return out;
+  }
+
+  /// Fixes obtuse triangle t with the best candidate, or with the best pair (a candidate, then
+  /// one for an obtuse triangle it made) when no single one leaves fewer obtuse triangles. With
+  /// !allow_worse, a fix that would leave more obtuse triangles than before is not made.
+  bool fix(int t, bool allow_worse) {
+    const auto cands = candidates(t);
+    const auto sc = scores(cands);
+    int best = -1;
+    Score best_score{kNone, 0.0};
+    for (std::size_t i = 0; i < cands.size(); ++i)
+      if (sc[i] < best_score) best = static_cast<int>(i), best_score = sc[i];
     if (best < 0) return false;
-    if (std::getenv("ACUTE_NO_DEBUG2")) {
-      const auto& c = cands[static_cast<std::size_t>(best)];
-      std::fprintf(stderr, "fix %d: cand %d/%zu kind %d at (%g, %g) delta %d %g\n", t, best, cands.size(), c.kind, c.p.dx, c.p.dy, best_delta.first, best_delta.second);
+    int pair_first = -1, pair_tri = -1, pair_second = -1;
+    Score pair_score = best_score;
+    if (best_score.first >= 0) {
+      std::vector<std::size_t> order(cands.size());
+      for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+      std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return sc[x] < sc[y]; });
+      for (std::size_t r = 0; r < std::min<std::size_t>(order.size(), 4); ++r) {
+        const std::size_t i = order[r];
+        if (sc[i].first >= kNone) break;
+        tr_.begin();
+        apply(cands[i]);
+        std::vector<int> bad;
+        for (int u : tr_.touched())
+          if (tr_.tri(u).alive && tr_.is_obtuse(tr_.tri(u))) bad.push_back(u);
+        for (std::size_t bi = 0; bi < std::min<std::size_t>(bad.size(), 3); ++bi) {
+          const auto second = candidates(bad[bi]);
+          for (std::size_t j = 0; j < second.size(); ++j) {
+            tr_.nest();
+            if (apply(second[j])) {
+              Score d = obtuse_delta();
+              d.first += 0;  // two points for this delta: only better when strictly fewer obtuse
+              if (d.first < pair_score.first - 0 && d < pair_score) {
+                pair_score = d;
+                pair_first = static_cast<int>(i);
+                pair_tri = bad[bi];
+                pair_second = static_cast<int>(j);
+              }
+            }
+            tr_.unnest();
+          }
+        }
+        tr_.rollback();
+      }
     }
+    if (pair_first >= 0) {
+      if (!allow_worse && pair_score.first > 0) return false;
+      tr_.begin();
+      apply(cands[static_cast<std::size_t>(pair_first)]);
+      const auto second = candidates(pair_tri);
+      if (static_cast<std::size_t>(pair_second) < second.size()) apply(second[static_cast<std::size_t>(pair_second)]);
+      tr_.commit();
+      return true;
+    }
+    if (!allow_worse && best_score.first > 0) return false;
     tr_.begin();
     apply(cands[static_cast<std::size_t>(best)]);
     tr_.commit();
@@ -221,14 +274,15 @@ class NonObtuseSolver {
   }
 
   /// Refinement: obtuse triangles fixed one by one until none is left or the caps are hit.
+  /// Fixes that make things worse wait until no other fix helps.
   bool refine(std::size_t max_steiner, bool shuffled) {
     std::vector<int> queue;
     for (int t = 0; t < tr_.n_tris(); ++t)
       if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) queue.push_back(t);
     if (shuffled) std::shuffle(queue.begin(), queue.end(), rng_);
     const std::size_t initial = queue.size();
-    std::size_t fixes = 0;
-    std::size_t head = 0;
+    std::size_t fixes = 0, head = 0;
+    bool allow_worse = false, progress = false;
     while (true) {
       if (head == queue.size()) {
         queue.clear();
@@ -236,20 +290,21 @@ class NonObtuseSolver {
         for (int t = 0; t < tr_.n_tris(); ++t)
           if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) queue.push_back(t);
         if (queue.empty()) return true;
+        std::shuffle(queue.begin(), queue.end(), rng_);
+        allow_worse = !progress;  // a whole pass without a fix: let the next one be worse
+        progress = false;
       }
       const int t = queue[head++];
       if (!tr_.tri(t).alive || !tr_.is_obtuse(tr_.tri(t))) continue;
       if (tr_.n_steiner() >= max_steiner || out_of_time()) return false;
       if (++fixes % 32 == 0 && tr_.n_obtuse() > 2 * initial + 10) return false;  // diverging
-      const std::size_t first_new = static_cast<std::size_t>(tr_.n_tris());
-      std::vector<int> changed;
-      if (std::getenv("ACUTE_NO_DEBUG") && tr_.n_steiner() % 50 == 0)
-        std::fprintf(stderr, "steiner %zu obtuse %zu tris %d\n", tr_.n_steiner(), tr_.n_obtuse(), tr_.n_tris());
-      if (!fix(t)) continue;
-      for (int u : tr_.last_touched()) changed.push_back(u);
-      for (int u : changed)
+      if (!fix(t, allow_worse)) continue;
+      progress = true;
+      if (allow_worse) {
+        allow_worse = false;
+      }
+      for (int u : tr_.last_touched())
         if (tr_.tri(u).alive && tr_.is_obtuse(tr_.tri(u))) queue.push_back(u);
-      (void)first_new;
     }
   }
 
