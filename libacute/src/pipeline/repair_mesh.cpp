@@ -415,7 +415,7 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
     // Right angles allowed: the dedicated non-obtuse triangulation on exact rationals.
     notify(o, "non-obtuse");
     NonObtuseParams np;
-    np.time_limit_s = o.time_limit_s;
+    np.time_limit_s = 0.7 * o.time_limit_s;  // the rest for the fallback starts below
     np.seed = o.seed;
     np.cancel = o.cancel;
     NonObtuseResult nr = non_obtuse_triangulation(domain, np);

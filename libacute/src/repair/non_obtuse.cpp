@@ -8,8 +8,6 @@
 #include <algorithm>
 #include <chrono>
 #include <random>
-#include <cstdio>
-#include <cstdlib>
 
 namespace acute {
 
@@ -27,13 +25,13 @@ std::size_t bits(const Q& q) {
 }
 
 /// Above this, a point that need not be exact (off the segments) is rounded to doubles.
-constexpr std::size_t kMaxBits = 600;
+constexpr std::size_t kMaxBits = 400;
 
 XPoint rounded(const XPoint& p) { return XPoint(Q(p.dx), Q(p.dy)); }
 
 struct Candidate {
-  enum Kind { EdgeSplit, Free } kind;
-  int tri = -1, edge = -1;  ///< EdgeSplit: the edge; Free: where the walk starts
+  enum Kind { EdgeSplit, Free, Remove } kind;
+  int tri = -1, edge = -1;  ///< EdgeSplit: the edge; Free: where the walk starts; Remove: tri is the vertex
   XPoint p;
 };
 
@@ -70,6 +68,16 @@ class NonObtuseSolver {
       } else {
         out.push_back({Candidate::EdgeSplit, t, k, foot});
       }
+      // Points between the foot and the far corner d across ab: one point for both sides.
+      if (tri.n[k] >= 0) {
+        const auto& nt = tr_.tri(tri.n[k]);
+        int m = 0;
+        while (nt.v[m] == tri.v[(k + 1) % 3] || nt.v[m] == tri.v[(k + 2) % 3]) ++m;
+        const XPoint& d = tr_.point(nt.v[m]);
+        const double fx = Q(a.x + s * abx).get_d(), fy = Q(a.y + s * aby).get_d();
+        for (double lambda : {0.2, 0.45})
+          out.push_back({Candidate::Free, t, -1, XPoint(Q(fx + lambda * (d.dx - fx)), Q(fy + lambda * (d.dy - fy)))});
+      }
       // Circumcentre (beyond edge ab for an obtuse triangle), rounded: it need not be exact.
       const double ax = a.dx - c.dx, ay = a.dy - c.dy, bx = b.dx - c.dx, by = b.dy - c.dy;
       const double d = 2 * (ax * by - ay * bx);
@@ -80,6 +88,10 @@ class NonObtuseSolver {
       }
     }
     if (tri.seg[k] < 0) ray_candidates(t, k, out);
+    // Removing a Steiner corner (two Steiner points close on a segment make a needle that no
+    // insertion mends).
+    for (int m = 0; m < 3; ++m)
+      if (!tr_.is_required(tri.v[m])) out.push_back({Candidate::Remove, tri.v[m], -1, XPoint()});
     // Midpoint of the longest edge (on a segment: exact), a robust last choice.
     XPoint mid((a.x + b.x) / 2, (a.y + b.y) / 2);
     if (tri.seg[k] < 0 && bits(mid.x) + bits(mid.y) > 2 * kMaxBits) mid = rounded(mid);
@@ -170,6 +182,7 @@ class NonObtuseSolver {
 
   /// Applies a candidate (inside the open transaction). Returns false when it cannot be inserted.
   bool apply(const Candidate& c) {
+    if (c.kind == Candidate::Remove) return tr_.remove_vertex(c.tri);
     if (c.kind == Candidate::EdgeSplit) return tr_.split_edge(c.tri, c.edge, c.p) >= 0;
     if (c.tri < 0) return false;
     return tr_.insert(c.p, c.tri) >= 0;
@@ -225,7 +238,7 @@ class NonObtuseSolver {
     if (best < 0) return false;
     int pair_first = -1, pair_tri = -1, pair_second = -1;
     Score pair_score = best_score;
-    if (best_score.first >= 0) {
+    if (best_score.first > 0) {
       std::vector<std::size_t> order(cands.size());
       for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
       std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return sc[x] < sc[y]; });
@@ -257,6 +270,18 @@ class NonObtuseSolver {
         tr_.rollback();
       }
     }
+    if (allow_worse && std::min(pair_score.first, best_score.first) > 0) {
+      // Stuck: a random kick (any insertable candidate) rather than the same worst-best move.
+      std::vector<std::size_t> ok;
+      for (std::size_t i = 0; i < cands.size(); ++i)
+        if (sc[i].first < kNone && cands[i].kind != Candidate::Remove) ok.push_back(i);
+      if (!ok.empty()) {
+        tr_.begin();
+        apply(cands[ok[std::uniform_int_distribution<std::size_t>(0, ok.size() - 1)(rng_)]]);
+        tr_.commit();
+        return true;
+      }
+    }
     if (pair_first >= 0) {
       if (!allow_worse && pair_score.first > 0) return false;
       tr_.begin();
@@ -283,6 +308,7 @@ class NonObtuseSolver {
     const std::size_t initial = queue.size();
     std::size_t fixes = 0, head = 0;
     bool allow_worse = false, progress = false;
+    std::size_t fewest = queue.size() + 1, stalled = 0, pass_start = queue.size();
     while (true) {
       if (head == queue.size()) {
         queue.clear();
@@ -291,20 +317,33 @@ class NonObtuseSolver {
           if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) queue.push_back(t);
         if (queue.empty()) return true;
         std::shuffle(queue.begin(), queue.end(), rng_);
-        allow_worse = !progress;  // a whole pass without a fix: let the next one be worse
+        // A pass that did not lower the obtuse count below its best: let the next fix be worse;
+        // many such passes: this attempt is stuck.
+        if (queue.size() < fewest) {
+          fewest = queue.size();
+          stalled = 0;
+        } else if (++stalled > 12) {
+          return false;
+        }
+        allow_worse = !progress || stalled > 2;
+        pass_start = queue.size();
         progress = false;
       }
       const int t = queue[head++];
       if (!tr_.tri(t).alive || !tr_.is_obtuse(tr_.tri(t))) continue;
       if (tr_.n_steiner() >= max_steiner || out_of_time()) return false;
       if (++fixes % 32 == 0 && tr_.n_obtuse() > 2 * initial + 10) return false;  // diverging
+      if (fixes > 8 * max_steiner) return false;  // cycling
       if (!fix(t, allow_worse)) continue;
       progress = true;
       if (allow_worse) {
         allow_worse = false;
       }
-      for (int u : tr_.last_touched())
-        if (tr_.tri(u).alive && tr_.is_obtuse(tr_.tri(u))) queue.push_back(u);
+      // Obtuse triangles a fix made join this pass only while it is short (a pass must end,
+      // or moves that trade one obtuse triangle for another would go on for ever).
+      if (queue.size() < 8 * pass_start + 64)
+        for (int u : tr_.last_touched())
+          if (tr_.tri(u).alive && tr_.is_obtuse(tr_.tri(u))) queue.push_back(u);
     }
   }
 
@@ -426,7 +465,8 @@ NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtusePa
     Triangulation tr = Triangulation::from_mesh(cdt);
     NonObtuseParams p = params;
     p.seed = params.seed + attempt;
-    const auto share = timed ? now + (deadline - now) / 2 : deadline;
+    // The first attempt gets most of the time (its plateau search does finish, slowly).
+    const auto share = timed ? now + (attempt == 0 ? (deadline - now) * 3 / 4 : (deadline - now) / 2) : deadline;
     NonObtuseSolver solver(tr, p, share);
     ++result.rounds;
     if (solver.refine(cap, attempt > 0)) {
