@@ -233,8 +233,12 @@ class NonObtuseSolver {
     const auto sc = scores(cands);
     int best = -1;
     Score best_score{kNone, 0.0};
-    for (std::size_t i = 0; i < cands.size(); ++i)
+    for (std::size_t i = 0; i < cands.size(); ++i) {
+      // A removal only when it mends something: as a neutral move it undoes the insertion that
+      // carried an obtuse triangle along a cascade, and the search goes round in circles.
+      if (cands[i].kind == Candidate::Remove && sc[i].first >= 0) continue;
       if (sc[i] < best_score) best = static_cast<int>(i), best_score = sc[i];
+    }
     if (best < 0) return false;
     int pair_first = -1, pair_tri = -1, pair_second = -1;
     Score pair_score = best_score;
