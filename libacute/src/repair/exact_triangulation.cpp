@@ -158,22 +158,32 @@ Mesh Triangulation::to_mesh(const Mesh& like, std::vector<std::array<std::string
 
 int Triangulation::obtuse_corner(int t) const {
   const Tri& tri = tris_[static_cast<std::size_t>(t)];
+  if (!is_obtuse(tri)) return -1;
   for (int k = 0; k < 3; ++k)
     if (dot_sign(point(tri.v[k]), point(tri.v[(k + 1) % 3]), point(tri.v[(k + 2) % 3])) < 0) return k;
   return -1;
 }
 
-bool Triangulation::is_obtuse(const Tri& tri) const {
-  for (int k = 0; k < 3; ++k)
-    if (dot_sign(point(tri.v[k]), point(tri.v[(k + 1) % 3]), point(tri.v[(k + 2) % 3])) < 0) return true;
-  return false;
+namespace {
+
+signed char classify(const Triangulation& tr, const Tri& tri) {
+  if (tri.cls < 0) {
+    signed char c = 0;
+    for (int k = 0; k < 3 && c < 2; ++k) {
+      const int s = dot_sign(tr.point(tri.v[k]), tr.point(tri.v[(k + 1) % 3]), tr.point(tri.v[(k + 2) % 3]));
+      if (s < 0) c = 2;
+      else if (s == 0) c = 1;
+    }
+    tri.cls = c;
+  }
+  return tri.cls;
 }
 
-bool Triangulation::is_right(const Tri& tri) const {
-  for (int k = 0; k < 3; ++k)
-    if (dot_sign(point(tri.v[k]), point(tri.v[(k + 1) % 3]), point(tri.v[(k + 2) % 3])) == 0) return true;
-  return false;
-}
+}  // namespace
+
+bool Triangulation::is_obtuse(const Tri& tri) const { return classify(*this, tri) == 2; }
+
+bool Triangulation::is_right(const Tri& tri) const { return classify(*this, tri) == 1; }
 
 std::size_t Triangulation::n_obtuse() const {
   std::size_t n = 0;
@@ -397,6 +407,7 @@ std::vector<int> Triangulation::replace(const std::vector<int>& old, const std::
     Tri& t = made[i];
     t.v = fresh[i];
     t.alive = true;
+    t.cls = -1;
     for (int k = 0; k < 3; ++k) {
       const int a = t.v[(k + 1) % 3], b = t.v[(k + 2) % 3];
       int nb = -1, seg = -1;

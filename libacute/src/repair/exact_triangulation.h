@@ -36,6 +36,9 @@ struct Tri {
   std::array<int, 3> n{{-1, -1, -1}};    ///< neighbour across edge k; -1 outside the domain
   std::array<int, 3> seg{{-1, -1, -1}};  ///< input segment of edge k; -1 unconstrained
   bool alive = true;
+  /// Cached class of the corners (-1 not yet known, 0 acute, 1 a right corner, 2 an obtuse
+  /// corner): the corners never move, and the exact test of a right angle is costly.
+  mutable signed char cls = -1;
 };
 
 class Triangulation {
@@ -51,6 +54,7 @@ class Triangulation {
   const XPoint& point(int v) const { return pts_[static_cast<std::size_t>(v)]; }
   bool alive_point(int v) const { return alive_[static_cast<std::size_t>(v)] != 0; }
   bool is_required(int v) const { return v < n_required_; }
+  int triangle_of(int v) const { return vtri_[static_cast<std::size_t>(v)]; }
 
   /// Corner with an obtuse angle, or -1.
   int obtuse_corner(int t) const;

@@ -1,6 +1,7 @@
 #include <acute/repair/non_obtuse.h>
 
 #include "repair/exact_triangulation.h"
+#include "repair/polygon_centre.h"
 
 #include <acute/delaunay/cdt.h>
 #include <acute/mesh/segments.h>
@@ -16,6 +17,8 @@ namespace {
 using exact::Q;
 using exact::Triangulation;
 using exact::XPoint;
+using exact::XY;
+using exact::polygon_centres;
 
 using Clock = std::chrono::steady_clock;
 
@@ -30,8 +33,10 @@ constexpr std::size_t kMaxBits = 400;
 XPoint rounded(const XPoint& p) { return XPoint(Q(p.dx), Q(p.dy)); }
 
 struct Candidate {
-  enum Kind { EdgeSplit, Free, Remove } kind;
-  int tri = -1, edge = -1;  ///< EdgeSplit: the edge; Free: where the walk starts; Remove: tri is the vertex
+  enum Kind { EdgeSplit, Free, Remove, Relocate } kind;
+  /// EdgeSplit: the edge; Free: where the walk starts; Remove: tri is the vertex; Relocate: the
+  /// vertex tri goes, p comes (walk from a triangle at its first neighbour edge)
+  int tri = -1, edge = -1;
   XPoint p;
 };
 
@@ -88,6 +93,7 @@ class NonObtuseSolver {
       }
     }
     if (tri.seg[k] < 0) ray_candidates(t, k, out);
+    centre_candidates(t, out);
     // Removing a Steiner corner (two Steiner points close on a segment make a needle that no
     // insertion mends).
     for (int m = 0; m < 3; ++m)
@@ -180,9 +186,52 @@ class NonObtuseSolver {
     }
   }
 
+  /// Polygon centres: of t with its neighbours across unconstrained edges (a point that fans
+  /// that region into non-obtuse triangles), and of the link of a Steiner corner of t (moving
+  /// the corner there).
+  void centre_candidates(int t, std::vector<Candidate>& out) const {
+    const auto& tri = tr_.tri(t);
+    auto xy = [&](int v) { return XY{tr_.point(v).dx, tr_.point(v).dy}; };
+    std::vector<XY> region;
+    for (int i = 0; i < 3; ++i) {
+      const int a = tri.v[i], b = tri.v[(i + 1) % 3];
+      region.push_back(xy(a));
+      const int k = (i + 2) % 3;  // edge a -> b
+      if (tri.seg[k] < 0 && tri.n[k] >= 0) {
+        const auto& nt = tr_.tri(tri.n[k]);
+        for (int m = 0; m < 3; ++m)
+          if (nt.v[m] != a && nt.v[m] != b) region.push_back(xy(nt.v[m]));
+      }
+    }
+    for (const auto& p : polygon_centres(region, 4)) out.push_back({Candidate::Free, t, -1, XPoint(Q(p.first), Q(p.second))});
+    for (int m = 0; m < 3; ++m) {
+      const int v = tri.v[m];
+      if (tr_.is_required(v)) continue;
+      std::vector<int> fan = tr_.fan_of(v);
+      if (fan.empty()) continue;
+      std::vector<XY> link;
+      bool open = false;
+      for (int f : fan) {
+        const auto& u = tr_.tri(f);
+        int i = 0;
+        while (u.v[i] != v) ++i;
+        link.push_back(xy(u.v[(i + 1) % 3]));
+        if (u.n[(i + 1) % 3] < 0 || u.seg[(i + 1) % 3] >= 0) open = true;
+      }
+      if (open) continue;  // on a segment: it may only slide along it
+      const int anchor = tr_.tri(fan[0]).v[0] == v ? tr_.tri(fan[0]).v[1] : tr_.tri(fan[0]).v[0];
+      for (const auto& p : polygon_centres(link, 3))
+        out.push_back({Candidate::Relocate, v, anchor, XPoint(Q(p.first), Q(p.second))});
+    }
+  }
+
   /// Applies a candidate (inside the open transaction). Returns false when it cannot be inserted.
   bool apply(const Candidate& c) {
     if (c.kind == Candidate::Remove) return tr_.remove_vertex(c.tri);
+    if (c.kind == Candidate::Relocate) {
+      if (!tr_.remove_vertex(c.tri)) return false;
+      return tr_.insert(c.p, tr_.triangle_of(c.edge)) >= 0;
+    }
     if (c.kind == Candidate::EdgeSplit) return tr_.split_edge(c.tri, c.edge, c.p) >= 0;
     if (c.tri < 0) return false;
     return tr_.insert(c.p, c.tri) >= 0;
@@ -216,10 +265,13 @@ class NonObtuseSolver {
   /// Scores of t's candidates (inside no transaction; each tried and undone).
   std::vector<Score> scores(const std::vector<Candidate>& cands) {
     std::vector<Score> out;
+    const double before = static_cast<double>(tr_.n_steiner());
     for (const auto& c : cands) {
       tr_.begin();
       const bool ok = apply(c);
-      out.push_back(ok ? obtuse_delta() : Score{kNone, 0.0});
+      Score sc = ok ? obtuse_delta() : Score{kNone, 0.0};
+      sc.second += 10.0 * (static_cast<double>(tr_.n_steiner()) - before);  // equal counts: fewer points first
+      out.push_back(sc);
       tr_.rollback();
     }
     return out;
@@ -326,8 +378,8 @@ class NonObtuseSolver {
         if (queue.size() < fewest) {
           fewest = queue.size();
           stalled = 0;
-        } else if (++stalled > 12) {
-          return false;
+        } else if (++stalled > 40) {
+          return queue.size() <= 4 && cascade(queue, max_steiner);
         }
         allow_worse = !progress || stalled > 2;
         pass_start = queue.size();
@@ -336,7 +388,7 @@ class NonObtuseSolver {
       const int t = queue[head++];
       if (!tr_.tri(t).alive || !tr_.is_obtuse(tr_.tri(t))) continue;
       if (tr_.n_steiner() >= max_steiner || out_of_time()) return false;
-      if (++fixes % 32 == 0 && tr_.n_obtuse() > 2 * initial + 10) return false;  // diverging
+      if (++fixes % 32 == 0 && tr_.n_obtuse() > 4 * initial + 40) return false;  // diverging
       if (fixes > 8 * max_steiner) return false;  // cycling
       if (!fix(t, allow_worse)) continue;
       progress = true;
@@ -349,6 +401,35 @@ class NonObtuseSolver {
         for (int u : tr_.last_touched())
           if (tr_.tri(u).alive && tr_.is_obtuse(tr_.tri(u))) queue.push_back(u);
     }
+  }
+
+  /// Last resort for a few obtuse triangles: follow each one's chain of altitude feet (the foot
+  /// on the long edge moves the obtuse triangle across it) until the chain runs into a segment
+  /// and ends, whatever it costs on the way; undone when it does not end.
+  bool cascade(std::vector<int> bad, std::size_t max_steiner) {
+    tr_.begin();
+    for (std::size_t step = 0; step < 4000 && !bad.empty(); ++step) {
+      if (tr_.n_steiner() >= max_steiner || out_of_time()) break;
+      const int t = bad.back();
+      bad.pop_back();
+      if (!tr_.tri(t).alive || !tr_.is_obtuse(tr_.tri(t))) continue;
+      tr_.nest();
+      const auto cands = candidates(t);
+      if (cands.empty() || !apply(cands.front())) {  // the foot comes first
+        tr_.unnest();
+        break;
+      }
+      for (int u : tr_.touched())
+        if (tr_.tri(u).alive && tr_.is_obtuse(tr_.tri(u)) && std::find(bad.begin(), bad.end(), u) == bad.end())
+          bad.push_back(u);
+    }
+    for (int t = 0; t < tr_.n_tris(); ++t)
+      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) {
+        tr_.rollback();
+        return false;
+      }
+    tr_.commit();
+    return true;
   }
 
   /// Tries to remove Steiner point v keeping every triangle non-obtuse.
