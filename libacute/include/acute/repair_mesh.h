@@ -24,8 +24,8 @@ struct RepairMeshProgress {
 /// The start of the required-points repair.
 enum class RequiredStart {
   /// With allow_right: the dedicated non-obtuse Steiner triangulation (non_obtuse_triangulation,
-  /// exact rationals), the starts below only if it fails. Without: Cdt, then Refine, then Cvt
-  /// until one meets the bound (fewest Steiner points first)
+  /// exact rationals; its best result is returned even when obtuse triangles remain). Without:
+  /// Cdt, then Refine, then Cvt until one meets the bound (fewest Steiner points first)
   Auto,
   Cdt,     ///< the bare constrained Delaunay triangulation of the points
   Refine,  ///< Delaunay refinement of it (min angle 20)
@@ -98,8 +98,9 @@ Domain repair_domain(const Mesh& mesh, const RepairMeshOptions& options, std::ve
 /// are ignored). \throws InvalidInput for an invalid mesh, features or options.
 RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options = {});
 
-/// Required-points mode on a domain (e.g. a CG:SHOP instance): a start mesh holding every input
-/// point (options.start), then the repair with min 0 and max 90 (or 90 + 1e-6 with allow_right).
+/// Required-points mode on a domain (e.g. a CG:SHOP instance). With allow_right and
+/// RequiredStart::Auto: non_obtuse_triangulation (exact; result.exact_coordinates set). Else a
+/// start mesh holding every input point (options.start), then the repair with min 0, max 90.
 /// With RequiredStart::Auto the starts are tried in order of cost in Steiner points, each with a
 /// share of the time limit, until one meets the bound exactly; else the one with fewest bad triangles.
 RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOptions& options = {});
