@@ -17,7 +17,7 @@ import subprocess
 import sys
 import time
 
-SHARED = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared")
+SHARED = os.environ.get("ACUTE_SHARED_DIR") or os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "shared")
 
 
 def run_one(args, inst_path, uid):
@@ -111,6 +111,14 @@ def main():
     print(f"instances: {len(results)}; valid (meshcheck exit 0): {valid}; without a valid result: {len(invalid)}")
     if known:
         print(f"Steiner points over the valid ones: ours {ours}, best known {known}, ratio {ours / known:.2f}")
+    # meshcheck decides angles on doubles within 1e-9 degrees; acute decides them exactly on the
+    # rationals: a result is a valid CG:SHOP solution only when both agree.
+    exact = [r for r in results if r.get("meshcheck_rc") == 0 and r.get("n_obtuse_exact") == 0
+             and r.get("steiner") is not None and best.get(r["uid"]) is not None]
+    if exact:
+        eo, ek = sum(r["steiner"] for r in exact), sum(best[r["uid"]] for r in exact)
+        print(f"valid and exactly non-obtuse (acute's exact count 0 as well): {len(exact)}; "
+              f"Steiner points ours {eo}, best known {ek}, ratio {eo / ek:.2f}")
     by_rc = {}
     for rec in results:
         by_rc[str(rec.get("meshcheck_rc"))] = by_rc.get(str(rec.get("meshcheck_rc")), 0) + 1

@@ -130,9 +130,9 @@ int run_repair(RepairArgs args, const GlobalOptions& global) {
   write_options.title = result.domain.name;
   for (const auto& out : args.outputs) {
     if (extension(out) == ".json")
-      io::write_cgshop_solution(result.mesh, result.domain, out);
-    else if (args.exact && extension(out) == ".off")
-      io::write_off_exact(result.mesh, out);
+      io::write_cgshop_solution(result.mesh, result.domain, out, &result.exact_coordinates);
+    else if ((args.exact || !result.exact_coordinates.empty()) && extension(out) == ".off")
+      io::write_off_exact(result.mesh, out, &result.exact_coordinates);
     else
       io::write_mesh(result.mesh, out, write_options);
   }

@@ -23,7 +23,10 @@ struct RepairMeshProgress {
 
 /// The start of the required-points repair.
 enum class RequiredStart {
-  Auto,    ///< Cdt, then Refine, then Cvt until one meets the bound (fewest Steiner points first)
+  /// With allow_right: the dedicated non-obtuse Steiner triangulation (non_obtuse_triangulation,
+  /// exact rationals; its best result is returned even when obtuse triangles remain). Without:
+  /// Cdt, then Refine, then Cvt until one meets the bound (fewest Steiner points first)
+  Auto,
   Cdt,     ///< the bare constrained Delaunay triangulation of the points
   Refine,  ///< Delaunay refinement of it (min angle 20)
   Cvt      ///< the CVT mesh with every input point fixed
@@ -73,7 +76,10 @@ struct RepairMeshResult {
   std::size_t n_right_exact = 0;   ///< triangles with an exactly right angle
   double min_angle_deg = 0, max_angle_deg = 0;
   int iterations = 0;
-  std::string start;            ///< required points: the start that was kept ("cdt", "refine", "cvt")
+  std::string start;            ///< required points: the start that was kept ("non-obtuse", "cdt", "refine", "cvt")
+  /// Exact coordinates ("p" or "p/q") of every mesh vertex by index when the mesh holds rational
+  /// points (the non-obtuse mode); empty when the doubles are the points. Pass to the io writers.
+  std::vector<std::array<std::string, 2>> exact_coordinates;
   std::vector<BadTriangle> remaining;  ///< first bad triangles left (up to 100)
   std::vector<std::string> notes;
 };
@@ -92,8 +98,9 @@ Domain repair_domain(const Mesh& mesh, const RepairMeshOptions& options, std::ve
 /// are ignored). \throws InvalidInput for an invalid mesh, features or options.
 RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options = {});
 
-/// Required-points mode on a domain (e.g. a CG:SHOP instance): a start mesh holding every input
-/// point (options.start), then the repair with min 0 and max 90 (or 90 + 1e-6 with allow_right).
+/// Required-points mode on a domain (e.g. a CG:SHOP instance). With allow_right and
+/// RequiredStart::Auto: non_obtuse_triangulation (exact; result.exact_coordinates set). Else a
+/// start mesh holding every input point (options.start), then the repair with min 0, max 90.
 /// With RequiredStart::Auto the starts are tried in order of cost in Steiner points, each with a
 /// share of the time limit, until one meets the bound exactly; else the one with fewest bad triangles.
 RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOptions& options = {});

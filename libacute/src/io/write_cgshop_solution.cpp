@@ -234,7 +234,7 @@ std::array<std::string, 2> exact_coordinates(const Mesh& mesh, VertexHandle vh) 
   return {exact_rational(p.x()), exact_rational(p.y())};
 }
 
-void write_off_exact(const Mesh& mesh, const std::string& path) {
+void write_off_exact(const Mesh& mesh, const std::string& path, const ExactCoordinates* exact_given) {
   std::vector<int> index(mesh.n_vertices(), -1);
   int n = 0;
   for (auto vh : mesh.vertices()) index[vh.idx()] = n++;
@@ -244,7 +244,8 @@ void write_off_exact(const Mesh& mesh, const std::string& path) {
   char buf[64];
   for (auto vh : mesh.vertices()) {
     const Point2 p = point2(mesh, vh);
-    const auto exact = exact_coordinates(mesh, vh);
+    const bool given = exact_given && static_cast<std::size_t>(vh.idx()) < exact_given->size();
+    const auto exact = given ? (*exact_given)[static_cast<std::size_t>(vh.idx())] : exact_coordinates(mesh, vh);
     if (exact[0] == exact_rational(p.x()) && exact[1] == exact_rational(p.y())) {
       std::snprintf(buf, sizeof buf, "%.17g %.17g", p.x(), p.y());
       out << buf << " 0\n";
@@ -260,7 +261,7 @@ void write_off_exact(const Mesh& mesh, const std::string& path) {
   file.commit();
 }
 
-CgshopSolution make_cgshop_solution(const Mesh& mesh, const Domain& domain) {
+CgshopSolution make_cgshop_solution(const Mesh& mesh, const Domain& domain, const ExactCoordinates* exact) {
   CgshopSolution s;
   s.instance_uid = domain.instance_uid.empty() ? domain.name : domain.instance_uid;
   s.n_points = domain.points.size();
@@ -279,7 +280,8 @@ CgshopSolution make_cgshop_solution(const Mesh& mesh, const Domain& domain) {
     } else {
       index[vh.idx()] = static_cast<int>(s.n_points + s.steiner_points.size());
       s.steiner_points.push_back(p);
-      s.steiner_exact.push_back(exact_coordinates(mesh, vh));
+      const bool given = exact && static_cast<std::size_t>(vh.idx()) < exact->size();
+      s.steiner_exact.push_back(given ? (*exact)[static_cast<std::size_t>(vh.idx())] : exact_coordinates(mesh, vh));
     }
   }
   for (std::size_t i = 0; i < present.size(); ++i)
@@ -322,8 +324,8 @@ void write_cgshop_solution(const CgshopSolution& solution, const std::string& pa
   file.commit();
 }
 
-void write_cgshop_solution(const Mesh& mesh, const Domain& domain, const std::string& path) {
-  write_cgshop_solution(make_cgshop_solution(mesh, domain), path);
+void write_cgshop_solution(const Mesh& mesh, const Domain& domain, const std::string& path, const ExactCoordinates* exact) {
+  write_cgshop_solution(make_cgshop_solution(mesh, domain, exact), path);
 }
 
 }  // namespace acute::io

@@ -24,7 +24,10 @@ std::array<std::string, 2> exact_coordinates(const Mesh& mesh, VertexHandle vh);
 
 /// OFF with exact coordinates (exact_coordinates; "p/q" tokens, as meshcheck and CG:SHOP tools
 /// read them; not every OFF reader does). Deleted elements skipped. Atomic. \throws IoError
-void write_off_exact(const Mesh& mesh, const std::string& path);
+/// `exact`, when given, holds each vertex's exact coordinates (by index; e.g. from
+/// non_obtuse_triangulation) and replaces exact_coordinates.
+using ExactCoordinates = std::vector<std::array<std::string, 2>>;
+void write_off_exact(const Mesh& mesh, const std::string& path, const ExactCoordinates* exact = nullptr);
 
 struct CgshopSolution {
   std::string instance_uid;
@@ -37,12 +40,13 @@ struct CgshopSolution {
 /// The solution a mesh of `domain` represents: a mesh vertex at a domain point (exact) is that
 /// point, any other used vertex a Steiner point. \throws InvalidInput when a domain point is not a
 /// mesh vertex (the triangulation would not be valid).
-CgshopSolution make_cgshop_solution(const Mesh& mesh, const Domain& domain);
+CgshopSolution make_cgshop_solution(const Mesh& mesh, const Domain& domain, const ExactCoordinates* exact = nullptr);
 
 /// Writes {"content_type": "CG_SHOP_2025_Solution", "instance_uid", "steiner_points_x",
 /// "steiner_points_y", "edges", "meta"}: a coordinate is a JSON integer when it is one (|x| < 2^53),
 /// else an exact string "p/q" (or an integer string). Atomic. \throws IoError, InvalidInput.
 void write_cgshop_solution(const CgshopSolution& solution, const std::string& path);
-void write_cgshop_solution(const Mesh& mesh, const Domain& domain, const std::string& path);
+void write_cgshop_solution(const Mesh& mesh, const Domain& domain, const std::string& path,
+                           const ExactCoordinates* exact = nullptr);
 
 }  // namespace acute::io

@@ -1,0 +1,580 @@
+#include <acute/repair/non_obtuse.h>
+
+#include "repair/exact_triangulation.h"
+#include "repair/polygon_centre.h"
+
+#include <acute/delaunay/cdt.h>
+#include <acute/mesh/segments.h>
+
+#include <algorithm>
+#include <chrono>
+#include <random>
+
+namespace acute {
+
+namespace {
+
+using exact::Q;
+using exact::Triangulation;
+using exact::XPoint;
+using exact::XY;
+using exact::polygon_centres;
+
+using Clock = std::chrono::steady_clock;
+
+/// Bits of a rational (numerator + denominator): Steiner points built from Steiner points grow.
+std::size_t bits(const Q& q) {
+  return mpz_sizeinbase(q.get_num_mpz_t(), 2) + mpz_sizeinbase(q.get_den_mpz_t(), 2);
+}
+
+/// Above this, a point that need not be exact (off the segments) is rounded to doubles.
+constexpr std::size_t kMaxBits = 400;
+
+XPoint rounded(const XPoint& p) { return XPoint(Q(p.dx), Q(p.dy)); }
+
+struct Candidate {
+  enum Kind { EdgeSplit, Free, Remove, Relocate } kind;
+  /// EdgeSplit: the edge; Free: where the walk starts; Remove: tri is the vertex; Relocate: the
+  /// vertex tri goes, p comes (walk from a triangle at its first neighbour edge)
+  int tri = -1, edge = -1;
+  XPoint p;
+};
+
+class NonObtuseSolver {
+ public:
+  NonObtuseSolver(Triangulation& tr, const NonObtuseParams& params, Clock::time_point deadline)
+      : tr_(tr), params_(params), deadline_(deadline), rng_(params.seed) {}
+
+  bool out_of_time() const {
+    return Clock::now() > deadline_ || (params_.cancel && params_.cancel());
+  }
+
+  /// Candidate points that could remove the obtuse angle of triangle t.
+  std::vector<Candidate> candidates(int t) const {
+    std::vector<Candidate> out;
+    const int k = tr_.obtuse_corner(t);
+    if (k < 0) return out;
+    const auto& tri = tr_.tri(t);
+    const XPoint& c = tr_.point(tri.v[k]);
+    const XPoint& a = tr_.point(tri.v[(k + 1) % 3]);
+    const XPoint& b = tr_.point(tri.v[(k + 2) % 3]);
+    // Foot of the altitude from the obtuse corner: two right triangles on this side.
+    const Q abx = b.x - a.x, aby = b.y - a.y;
+    const Q s = ((c.x - a.x) * abx + (c.y - a.y) * aby) / (abx * abx + aby * aby);
+    XPoint foot(a.x + s * abx, a.y + s * aby);
+    if (tri.seg[k] >= 0) {
+      out.push_back({Candidate::EdgeSplit, t, k, foot});
+    } else {
+      if (bits(foot.x) + bits(foot.y) > 2 * kMaxBits) {
+        // Rounded, and pushed a hair away from c so both angles at the foot stay below 90.
+        const double ux = foot.dx - c.dx, uy = foot.dy - c.dy;
+        foot = XPoint(Q(foot.dx + 1e-9 * ux), Q(foot.dy + 1e-9 * uy));
+        out.push_back({Candidate::Free, t, -1, foot});
+      } else {
+        out.push_back({Candidate::EdgeSplit, t, k, foot});
+      }
+      // Points between the foot and the far corner d across ab: one point for both sides.
+      if (tri.n[k] >= 0) {
+        const auto& nt = tr_.tri(tri.n[k]);
+        int m = 0;
+        while (nt.v[m] == tri.v[(k + 1) % 3] || nt.v[m] == tri.v[(k + 2) % 3]) ++m;
+        const XPoint& d = tr_.point(nt.v[m]);
+        const double fx = Q(a.x + s * abx).get_d(), fy = Q(a.y + s * aby).get_d();
+        for (double lambda : {0.2, 0.45})
+          out.push_back({Candidate::Free, t, -1, XPoint(Q(fx + lambda * (d.dx - fx)), Q(fy + lambda * (d.dy - fy)))});
+      }
+      // Circumcentre (beyond edge ab for an obtuse triangle), rounded: it need not be exact.
+      const double ax = a.dx - c.dx, ay = a.dy - c.dy, bx = b.dx - c.dx, by = b.dy - c.dy;
+      const double d = 2 * (ax * by - ay * bx);
+      if (d != 0) {
+        const double la = ax * ax + ay * ay, lb = bx * bx + by * by;
+        const double ox = c.dx + (by * la - ay * lb) / d, oy = c.dy + (ax * lb - bx * la) / d;
+        if (std::isfinite(ox) && std::isfinite(oy)) out.push_back({Candidate::Free, tri.n[k], -1, XPoint(Q(ox), Q(oy))});
+      }
+    }
+    if (tri.seg[k] < 0) ray_candidates(t, k, out);
+    centre_candidates(t, out);
+    // Removing a Steiner corner (two Steiner points close on a segment make a needle that no
+    // insertion mends).
+    for (int m = 0; m < 3; ++m)
+      if (!tr_.is_required(tri.v[m])) out.push_back({Candidate::Remove, tri.v[m], -1, XPoint()});
+    // Midpoint of the longest edge (on a segment: exact), a robust last choice.
+    XPoint mid((a.x + b.x) / 2, (a.y + b.y) / 2);
+    if (tri.seg[k] < 0 && bits(mid.x) + bits(mid.y) > 2 * kMaxBits) mid = rounded(mid);
+    out.push_back({Candidate::EdgeSplit, t, k, mid});
+    if (tri.seg[k] < 0 && !(mid.x == (a.x + b.x) / 2 && mid.y == (a.y + b.y) / 2)) out.back().kind = Candidate::Free;
+    return out;
+  }
+
+  /// Rays from the obtuse corner c of t until they meet a segment: the altitude (perpendicular
+  /// to edge k), and along and perpendicular to each segment edge at c. Candidates: where a ray
+  /// meets the segment, and the foot of the perpendicular from c on it (right angles against
+  /// segments, as in a rectangular partition of an orthogonal polygon).
+  void ray_candidates(int t, int k, std::vector<Candidate>& out) const {
+    const auto& tri0 = tr_.tri(t);
+    const int cv = tri0.v[k];
+    const XPoint& c = tr_.point(cv);
+    const XPoint& a = tr_.point(tri0.v[(k + 1) % 3]);
+    const XPoint& b = tr_.point(tri0.v[(k + 2) % 3]);
+    std::vector<std::pair<Q, Q>> dirs;
+    dirs.emplace_back(b.y - a.y, -(b.x - a.x));  // right normal of ab: away from c
+    for (const auto& [w, seg] : tr_.spokes(cv)) {
+      if (seg < 0) continue;
+      const XPoint& pw = tr_.point(w);
+      const Q ux = pw.x - c.x, uy = pw.y - c.y;
+      dirs.emplace_back(-ux, -uy);
+      dirs.emplace_back(-uy, ux);
+      dirs.emplace_back(uy, -ux);
+    }
+    for (const auto& [ex, ey] : dirs) shoot(cv, ex, ey, out);
+  }
+
+  void shoot(int cv, const Q& ex, const Q& ey, std::vector<Candidate>& out) const {
+    const XPoint& c = tr_.point(cv);
+    auto cross = [&](const XPoint& p) -> Q { return ex * (p.y - c.y) - ey * (p.x - c.x); };
+    // The triangle around c whose wedge holds the direction.
+    int cur = -1, exit = -1;
+    for (int f : tr_.fan_of(cv)) {
+      const auto& u = tr_.tri(f);
+      int i = 0;
+      while (u.v[i] != cv) ++i;
+      const int sx = sgn(cross(tr_.point(u.v[(i + 1) % 3]))), sy = sgn(cross(tr_.point(u.v[(i + 2) % 3])));
+      if (sx < 0 && sy > 0) {  // x right of the ray, y left: the ray runs between them
+        cur = f;
+        exit = i;
+        break;
+      }
+    }
+    if (cur < 0) return;
+    for (int step = 0; step < 64; ++step) {
+      const auto& u = tr_.tri(cur);
+      const int x = u.v[(exit + 1) % 3], y = u.v[(exit + 2) % 3];
+      if (u.seg[exit] >= 0) {
+        const XPoint &px = tr_.point(x), &py = tr_.point(y);
+        const Q cx = cross(px), cy = cross(py);
+        const Q s = cx / (cx - cy);
+        XPoint hit(px.x + s * (py.x - px.x), px.y + s * (py.y - px.y));
+        if (bits(hit.x) + bits(hit.y) <= 2 * kMaxBits) out.push_back({Candidate::EdgeSplit, cur, exit, hit});
+        const Q sx = py.x - px.x, sy = py.y - px.y;
+        const Q r = ((c.x - px.x) * sx + (c.y - px.y) * sy) / (sx * sx + sy * sy);
+        if (r > 0 && r < 1) {
+          XPoint foot(px.x + r * sx, px.y + r * sy);
+          if (bits(foot.x) + bits(foot.y) <= 2 * kMaxBits) out.push_back({Candidate::EdgeSplit, cur, exit, foot});
+        }
+        return;
+      }
+      const int next = u.n[exit];
+      if (next < 0) return;
+      const auto& w = tr_.tri(next);
+      int m = 0;
+      while (w.v[m] == x || w.v[m] == y) ++m;  // the far corner of next
+      const int s = sgn(cross(tr_.point(w.v[m])));
+      if (s == 0) return;  // through a vertex
+      // Entered through (y, x) seen from next; leave through the edge the ray crosses.
+      const int far = w.v[m];
+      int leave = -1;
+      for (int j = 0; j < 3; ++j) {
+        const int p = w.v[(j + 1) % 3], q = w.v[(j + 2) % 3];
+        if ((p == x && q == y) || (p == y && q == x)) continue;
+        const int sp = p == far ? s : sgn(cross(tr_.point(p)));
+        const int sq = q == far ? s : sgn(cross(tr_.point(q)));
+        if (sp != sq) leave = j;
+      }
+      if (leave < 0) return;
+      cur = next;
+      exit = leave;
+    }
+  }
+
+  /// Polygon centres: of t with its neighbours across unconstrained edges (a point that fans
+  /// that region into non-obtuse triangles), and of the link of a Steiner corner of t (moving
+  /// the corner there).
+  void centre_candidates(int t, std::vector<Candidate>& out) const {
+    const auto& tri = tr_.tri(t);
+    auto xy = [&](int v) { return XY{tr_.point(v).dx, tr_.point(v).dy}; };
+    std::vector<XY> region;
+    for (int i = 0; i < 3; ++i) {
+      const int a = tri.v[i], b = tri.v[(i + 1) % 3];
+      region.push_back(xy(a));
+      const int k = (i + 2) % 3;  // edge a -> b
+      if (tri.seg[k] < 0 && tri.n[k] >= 0) {
+        const auto& nt = tr_.tri(tri.n[k]);
+        for (int m = 0; m < 3; ++m)
+          if (nt.v[m] != a && nt.v[m] != b) region.push_back(xy(nt.v[m]));
+      }
+    }
+    for (const auto& p : polygon_centres(region, 4)) out.push_back({Candidate::Free, t, -1, XPoint(Q(p.first), Q(p.second))});
+    for (int m = 0; m < 3; ++m) {
+      const int v = tri.v[m];
+      if (tr_.is_required(v)) continue;
+      std::vector<int> fan = tr_.fan_of(v);
+      if (fan.empty()) continue;
+      std::vector<XY> link;
+      bool open = false;
+      for (int f : fan) {
+        const auto& u = tr_.tri(f);
+        int i = 0;
+        while (u.v[i] != v) ++i;
+        link.push_back(xy(u.v[(i + 1) % 3]));
+        if (u.n[(i + 1) % 3] < 0 || u.seg[(i + 1) % 3] >= 0) open = true;
+      }
+      if (open) continue;  // on a segment: it may only slide along it
+      const int anchor = tr_.tri(fan[0]).v[0] == v ? tr_.tri(fan[0]).v[1] : tr_.tri(fan[0]).v[0];
+      for (const auto& p : polygon_centres(link, 3))
+        out.push_back({Candidate::Relocate, v, anchor, XPoint(Q(p.first), Q(p.second))});
+    }
+  }
+
+  /// Applies a candidate (inside the open transaction). Returns false when it cannot be inserted.
+  bool apply(const Candidate& c) {
+    if (c.kind == Candidate::Remove) return tr_.remove_vertex(c.tri);
+    if (c.kind == Candidate::Relocate) {
+      if (!tr_.remove_vertex(c.tri)) return false;
+      return tr_.insert(c.p, tr_.triangle_of(c.edge)) >= 0;
+    }
+    if (c.kind == Candidate::EdgeSplit) return tr_.split_edge(c.tri, c.edge, c.p) >= 0;
+    if (c.tri < 0) return false;
+    return tr_.insert(c.p, c.tri) >= 0;
+  }
+
+  /// How far past 90 degrees the largest angle of an obtuse triangle is (doubles; a tie-break).
+  double excess(const exact::Tri& t) const {
+    double worst = 0;
+    for (int k = 0; k < 3; ++k) {
+      const XPoint &o = tr_.point(t.v[k]), &p = tr_.point(t.v[(k + 1) % 3]), &q = tr_.point(t.v[(k + 2) % 3]);
+      const double ax = p.dx - o.dx, ay = p.dy - o.dy, bx = q.dx - o.dx, by = q.dy - o.dy;
+      worst = std::max(worst, std::atan2(std::abs(ax * by - ay * bx), ax * bx + ay * by));
+    }
+    return std::max(0.0, worst - 1.5707963267948966);
+  }
+
+  /// Change made by the open transaction: obtuse triangles, then their total excess.
+  std::pair<int, double> obtuse_delta() const {
+    int count = 0;
+    double ex = 0;
+    for (const auto& old : tr_.touched_originals())
+      if (old.alive && tr_.is_obtuse(old)) --count, ex -= excess(old);
+    for (int t : tr_.touched())
+      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) ++count, ex += excess(tr_.tri(t));
+    return {count, ex};
+  }
+
+  using Score = std::pair<int, double>;
+  static constexpr int kNone = 1 << 30;
+
+  /// Scores of t's candidates (inside no transaction; each tried and undone).
+  std::vector<Score> scores(const std::vector<Candidate>& cands) {
+    std::vector<Score> out;
+    const double before = static_cast<double>(tr_.n_steiner());
+    for (const auto& c : cands) {
+      tr_.begin();
+      const bool ok = apply(c);
+      Score sc = ok ? obtuse_delta() : Score{kNone, 0.0};
+      sc.second += 10.0 * (static_cast<double>(tr_.n_steiner()) - before);  // equal counts: fewer points first
+      out.push_back(sc);
+      tr_.rollback();
+    }
+    return out;
+  }
+
+  /// Fixes obtuse triangle t with the best candidate, or with the best pair (a candidate, then
+  /// one for an obtuse triangle it made) when no single one leaves fewer obtuse triangles. With
+  /// !allow_worse, a fix that would leave more obtuse triangles than before is not made.
+  bool fix(int t, bool allow_worse) {
+    const auto cands = candidates(t);
+    const auto sc = scores(cands);
+    int best = -1;
+    Score best_score{kNone, 0.0};
+    for (std::size_t i = 0; i < cands.size(); ++i) {
+      // A removal only when it mends something: as a neutral move it undoes the insertion that
+      // carried an obtuse triangle along a cascade, and the search goes round in circles.
+      if (cands[i].kind == Candidate::Remove && sc[i].first >= 0) continue;
+      if (sc[i] < best_score) best = static_cast<int>(i), best_score = sc[i];
+    }
+    if (best < 0) return false;
+    int pair_first = -1, pair_tri = -1, pair_second = -1;
+    Score pair_score = best_score;
+    if (best_score.first > 0) {
+      std::vector<std::size_t> order(cands.size());
+      for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+      std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return sc[x] < sc[y]; });
+      for (std::size_t r = 0; r < std::min<std::size_t>(order.size(), 4); ++r) {
+        const std::size_t i = order[r];
+        if (sc[i].first >= kNone) break;
+        tr_.begin();
+        apply(cands[i]);
+        std::vector<int> bad;
+        for (int u : tr_.touched())
+          if (tr_.tri(u).alive && tr_.is_obtuse(tr_.tri(u))) bad.push_back(u);
+        for (std::size_t bi = 0; bi < std::min<std::size_t>(bad.size(), 3); ++bi) {
+          const auto second = candidates(bad[bi]);
+          for (std::size_t j = 0; j < second.size(); ++j) {
+            tr_.nest();
+            if (apply(second[j])) {
+              Score d = obtuse_delta();
+              d.first += 0;  // two points for this delta: only better when strictly fewer obtuse
+              if (d.first < pair_score.first - 0 && d < pair_score) {
+                pair_score = d;
+                pair_first = static_cast<int>(i);
+                pair_tri = bad[bi];
+                pair_second = static_cast<int>(j);
+              }
+            }
+            tr_.unnest();
+          }
+        }
+        tr_.rollback();
+      }
+    }
+    if (allow_worse && std::min(pair_score.first, best_score.first) > 0) {
+      // Stuck: a random kick (any insertable candidate) rather than the same worst-best move.
+      std::vector<std::size_t> ok;
+      for (std::size_t i = 0; i < cands.size(); ++i)
+        if (sc[i].first < kNone && cands[i].kind != Candidate::Remove) ok.push_back(i);
+      if (!ok.empty()) {
+        tr_.begin();
+        apply(cands[ok[std::uniform_int_distribution<std::size_t>(0, ok.size() - 1)(rng_)]]);
+        tr_.commit();
+        return true;
+      }
+    }
+    if (pair_first >= 0) {
+      if (!allow_worse && pair_score.first > 0) return false;
+      tr_.begin();
+      apply(cands[static_cast<std::size_t>(pair_first)]);
+      const auto second = candidates(pair_tri);
+      if (static_cast<std::size_t>(pair_second) < second.size()) apply(second[static_cast<std::size_t>(pair_second)]);
+      tr_.commit();
+      return true;
+    }
+    if (!allow_worse && best_score.first > 0) return false;
+    tr_.begin();
+    apply(cands[static_cast<std::size_t>(best)]);
+    tr_.commit();
+    return true;
+  }
+
+  /// Refinement: obtuse triangles fixed one by one until none is left or the caps are hit.
+  /// Fixes that make things worse wait until no other fix helps.
+  bool refine(std::size_t max_steiner, bool shuffled) {
+    std::vector<int> queue;
+    for (int t = 0; t < tr_.n_tris(); ++t)
+      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) queue.push_back(t);
+    if (shuffled) std::shuffle(queue.begin(), queue.end(), rng_);
+    const std::size_t initial = queue.size();
+    std::size_t fixes = 0, head = 0;
+    bool allow_worse = false, progress = false;
+    std::size_t fewest = queue.size() + 1, stalled = 0, pass_start = queue.size();
+    while (true) {
+      if (head == queue.size()) {
+        queue.clear();
+        head = 0;
+        for (int t = 0; t < tr_.n_tris(); ++t)
+          if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) queue.push_back(t);
+        if (queue.empty()) return true;
+        std::shuffle(queue.begin(), queue.end(), rng_);
+        // A pass that did not lower the obtuse count below its best: let the next fix be worse;
+        // many such passes: this attempt is stuck.
+        if (queue.size() < fewest) {
+          fewest = queue.size();
+          stalled = 0;
+        } else if (++stalled > 40) {
+          return queue.size() <= 4 && cascade(queue, max_steiner);
+        }
+        allow_worse = !progress || stalled > 2;
+        pass_start = queue.size();
+        progress = false;
+      }
+      const int t = queue[head++];
+      if (!tr_.tri(t).alive || !tr_.is_obtuse(tr_.tri(t))) continue;
+      if (tr_.n_steiner() >= max_steiner || out_of_time()) return false;
+      if (++fixes % 32 == 0 && tr_.n_obtuse() > 4 * initial + 40) return false;  // diverging
+      if (fixes > 8 * max_steiner) return false;  // cycling
+      if (!fix(t, allow_worse)) continue;
+      progress = true;
+      if (allow_worse) {
+        allow_worse = false;
+      }
+      // Obtuse triangles a fix made join this pass only while it is short (a pass must end,
+      // or moves that trade one obtuse triangle for another would go on for ever).
+      if (queue.size() < 8 * pass_start + 64)
+        for (int u : tr_.last_touched())
+          if (tr_.tri(u).alive && tr_.is_obtuse(tr_.tri(u))) queue.push_back(u);
+    }
+  }
+
+  /// Last resort for a few obtuse triangles: follow each one's chain of altitude feet (the foot
+  /// on the long edge moves the obtuse triangle across it) until the chain runs into a segment
+  /// and ends, whatever it costs on the way; undone when it does not end.
+  bool cascade(std::vector<int> bad, std::size_t max_steiner) {
+    tr_.begin();
+    for (std::size_t step = 0; step < 4000 && !bad.empty(); ++step) {
+      if (tr_.n_steiner() >= max_steiner || out_of_time()) break;
+      const int t = bad.back();
+      bad.pop_back();
+      if (!tr_.tri(t).alive || !tr_.is_obtuse(tr_.tri(t))) continue;
+      tr_.nest();
+      const auto cands = candidates(t);
+      if (cands.empty() || !apply(cands.front())) {  // the foot comes first
+        tr_.unnest();
+        break;
+      }
+      for (int u : tr_.touched())
+        if (tr_.tri(u).alive && tr_.is_obtuse(tr_.tri(u)) && std::find(bad.begin(), bad.end(), u) == bad.end())
+          bad.push_back(u);
+    }
+    for (int t = 0; t < tr_.n_tris(); ++t)
+      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) {
+        tr_.rollback();
+        return false;
+      }
+    tr_.commit();
+    return true;
+  }
+
+  /// Tries to remove Steiner point v keeping every triangle non-obtuse.
+  bool try_remove(int v) {
+    tr_.begin();
+    if (!tr_.remove_vertex(v)) {
+      tr_.rollback();
+      return false;
+    }
+    for (int t : tr_.touched())
+      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) {
+        tr_.rollback();
+        return false;
+      }
+    tr_.commit();
+    return true;
+  }
+
+  /// Tries to replace Steiner points v and w by one new point (net one fewer).
+  bool try_merge(int v, int w) {
+    tr_.begin();
+    if (!tr_.remove_vertex(v) || !tr_.remove_vertex(w)) {
+      tr_.rollback();
+      return false;
+    }
+    std::vector<int> bad;
+    for (int t : tr_.touched())
+      if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) bad.push_back(t);
+    if (bad.empty()) {
+      tr_.commit();
+      return true;
+    }
+    if (bad.size() > 4) {
+      tr_.rollback();
+      return false;
+    }
+    // One insertion must fix everything the two removals broke.
+    std::vector<Candidate> cands;
+    for (int t : bad)
+      for (auto& c : candidates(t)) cands.push_back(std::move(c));
+    for (const auto& c : cands) {
+      tr_.nest();
+      bool ok = apply(c);
+      if (ok)
+        for (int t : tr_.touched())
+          if (tr_.tri(t).alive && tr_.is_obtuse(tr_.tri(t))) {
+            ok = false;
+            break;
+          }
+      if (ok) {
+        tr_.commit();
+        return true;
+      }
+      tr_.unnest();
+    }
+    tr_.rollback();
+    return false;
+  }
+
+  /// Local search: removals, then pairs replaced by one point, while anything improves.
+  void prune() {
+    for (int pass = 0; pass < 20; ++pass) {
+      bool progress = false;
+      std::vector<int> steiner = tr_.steiner_vertices();
+      std::shuffle(steiner.begin(), steiner.end(), rng_);
+      for (int v : steiner) {
+        if (out_of_time()) return;
+        if (tr_.alive_point(v) && try_remove(v)) progress = true;
+      }
+      steiner = tr_.steiner_vertices();
+      std::shuffle(steiner.begin(), steiner.end(), rng_);
+      for (int v : steiner) {
+        if (out_of_time()) return;
+        if (!tr_.alive_point(v)) continue;
+        for (int w : tr_.neighbours(v)) {
+          if (w == v || !tr_.alive_point(w) || tr_.is_required(w)) continue;
+          if (try_merge(v, w)) {
+            progress = true;
+            break;
+          }
+        }
+      }
+      if (!progress) return;
+    }
+  }
+
+ private:
+  Triangulation& tr_;
+  const NonObtuseParams& params_;
+  Clock::time_point deadline_;
+  std::mt19937 rng_;
+};
+
+}  // namespace
+
+NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtuseParams& params) {
+  const auto t0 = Clock::now();
+  const auto deadline = params.time_limit_s > 0
+                            ? t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(params.time_limit_s))
+                            : Clock::time_point::max();
+  const Mesh cdt = build_cdt(domain);
+  const std::size_t cap = params.max_steiner > 0 ? params.max_steiner : 60 * domain.points.size() + 2000;
+
+  NonObtuseResult result;
+  Triangulation best = Triangulation::from_mesh(cdt);
+  bool best_ok = false;
+  // Refinement strategies in turn (later ones only when an earlier one got stuck): each one
+  // starts from the CDT; the first that ends non-obtuse is pruned.
+  // Greedy refinements from the CDT, each in a different order (the order matters a lot: a
+  // cascade of altitude feet either closes quickly or runs away, which ends the attempt), each
+  // success pruned; the best kept. Time: attempts until half the budget, pruning the rest.
+  const bool timed = deadline != Clock::time_point::max();
+  int successes = 0;
+  for (unsigned attempt = 0; attempt < 400; ++attempt) {
+    const auto now = Clock::now();
+    if (attempt > 0 && (now > deadline || (params.cancel && params.cancel()))) break;
+    if (successes >= 4 || (successes >= 1 && (!timed || now - t0 > (deadline - t0) / 2))) break;
+    Triangulation tr = Triangulation::from_mesh(cdt);
+    NonObtuseParams p = params;
+    p.seed = params.seed + attempt;
+    // The first attempt gets most of the time (its plateau search does finish, slowly).
+    const auto share = timed ? now + (attempt == 0 ? (deadline - now) * 3 / 4 : (deadline - now) / 2) : deadline;
+    NonObtuseSolver solver(tr, p, share);
+    ++result.rounds;
+    if (solver.refine(cap, attempt > 0)) {
+      const std::size_t refined = tr.n_steiner();
+      NonObtuseSolver pruner(tr, p, timed ? Clock::now() + (deadline - Clock::now()) / 2 : deadline);
+      pruner.prune();
+      if (!best_ok || tr.n_steiner() < best.n_steiner()) {
+        result.n_refined = refined;
+        best = std::move(tr);
+      }
+      best_ok = true;
+      ++successes;
+    } else if (!best_ok && (attempt == 0 || tr.n_obtuse() < best.n_obtuse())) {
+      best = std::move(tr);
+    }
+  }
+  (void)best_ok;
+  result.mesh = best.to_mesh(cdt, &result.exact);
+  result.n_steiner = best.n_steiner();
+  result.n_obtuse = best.n_obtuse();
+  result.n_right = best.n_right();
+  result.ok = result.n_obtuse == 0;
+  return result;
+}
+
+}  // namespace acute
