@@ -30,4 +30,13 @@ inline Domain wedge_with_hole() {
   return d;
 }
 
+/// The unit square with a slanted interior segment (the domain continues across it).
+inline Domain square_with_segment() {
+  Domain d = unit_square();
+  d.name = "square_with_segment";
+  d.points.insert(d.points.end(), {{0.2, 0.3}, {0.7, 0.8}});
+  d.segments.push_back({4, 5});
+  return d;
+}
+
 }  // namespace acute::test

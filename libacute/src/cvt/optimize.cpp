@@ -78,19 +78,18 @@ class Optimizer {
     double sum2 = 0;
     for (const auto& m : movers_) {
       const auto i = static_cast<std::size_t>(m.vh.idx());
-      const Point2 v = point2(mesh_, m.vh);
       const double mass = cells_.mass[i];
-      const Point2 g = 2.0 * (mass * v - cells_.moment[i]);  // 2 m (v - c)
+      const Point2 g = -2.0 * cells_.shift[i];  // dF/dv = 2 m (v - c) (the cell boundary terms cancel)
       const double h = std::pow(ws_.vertex_rho[i], -0.25);
       if (m.segment >= 0) {
         grad_[m.offset] = g.dot(m.dir);
-        const double r = std::abs(grad_[m.offset]) / (2.0 * mass * h);
+        const double r = (mass > 0 ? std::abs(grad_[m.offset]) / (2.0 * mass * h) : 0.0);
         max_move_ = std::max(max_move_, r);
         sum2 += r * r;
       } else {
         grad_[m.offset] = g.x();
         grad_[m.offset + 1] = g.y();
-        const double r = g.norm() / (2.0 * mass * h);
+        const double r = (mass > 0 ? g.norm() / (2.0 * mass * h) : 0.0);
         max_move_ = std::max(max_move_, r);
         sum2 += r * r;
       }
@@ -115,7 +114,9 @@ class Optimizer {
   void lloyd_targets(Eigen::VectorXd& x) const {
     x.resize(num_vars_);
     for (const auto& m : movers_) {
-      const Point2 c = cells_.centroid(m.vh.idx());
+      const auto i = static_cast<std::size_t>(m.vh.idx());
+      const double mass = cells_.mass[i];
+      const Point2 c = point2(mesh_, m.vh) + (mass > 0 ? Point2(cells_.shift[i] / mass) : Point2(0, 0));
       if (m.segment >= 0) {
         x[m.offset] = (c - m.origin).dot(m.dir);
       } else {

@@ -1,127 +1,240 @@
 #include <acute/cvt/voronoi.h>
 
+#include "cvt/site_delaunay.h"
+
 #include <acute/mesh/geometry.h>
 
 #include <cmath>
+#include <limits>
 
 namespace acute {
+namespace detail {
+
+struct CellScratch {
+  SiteDelaunay delaunay;
+  std::vector<int> site_vertex, previous_site_vertex;  ///< site -> vertex idx
+  std::vector<int> vertex_site;                        ///< vertex idx -> site or -1
+  std::vector<Point2> points;                          ///< site positions
+  std::vector<double> site_rho;
+  std::vector<unsigned> stamp;  ///< per site: the triangle that last queued it
+  unsigned counter = 0;
+  std::vector<int> queue;
+  /// A corner of the piece being clipped, relative to its site, with rho there (< 0: not yet
+  /// evaluated) and the label of the edge to the next corner (-1: a triangle edge, else the site
+  /// whose bisector it lies on).
+  struct Corner {
+    Point2 y;
+    double rho;
+    int label;
+  };
+  std::vector<Corner> poly, next;
+  std::vector<double> side;
+  std::vector<unsigned> vertex_stamp;  ///< local mode: ring collection
+  unsigned vertex_counter = 0;
+  std::vector<int> ring, next_ring;
+};
+
+}  // namespace detail
+
 namespace {
 
-/// Integrals over triangle (s, p1, p2) of rho (linear, values r0 r1 r2), rho x and rho |x - s|^2,
-/// added to mass, moment, energy; returns the signed area.
-inline double integrate(const Point2& s, const Point2& p1, const Point2& p2, double r0, double r1, double r2, double& mass,
-                        Point2& moment, double& energy) {
-  const Point2 q1 = p1 - s, q2 = p2 - s;
-  const double area = 0.5 * (q1.x() * q2.y() - q1.y() * q2.x());
+using detail::CellScratch;
+using Corner = CellScratch::Corner;
+
+/// Keeps the part of `poly` where y.d <= |d|^2 / 2 (the side of the site against the site at
+/// offset d). Returns false when nothing was cut.
+bool clip(CellScratch& s, const Point2& d, int label) {
+  const double half = 0.5 * d.squaredNorm();
+  const std::size_t n = s.poly.size();
+  s.side.resize(n);
+  bool cut = false;
+  for (std::size_t k = 0; k < n; ++k) {
+    s.side[k] = s.poly[k].y.dot(d) - half;
+    cut = cut || s.side[k] > 0;
+  }
+  if (!cut) return false;
+  s.next.clear();
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t m = k + 1 == n ? 0 : k + 1;
+    const double sk = s.side[k], sm = s.side[m];
+    const Corner& a = s.poly[k];
+    if (sk <= 0) {
+      if (sm > 0) {
+        if (sk < 0) {
+          s.next.push_back(a);
+          const Point2& b = s.poly[m].y;
+          s.next.push_back({a.y + (sk / (sk - sm)) * (b - a.y), -1.0, label});  // sk, sm strictly opposite
+        } else {
+          s.next.push_back({a.y, a.rho, label});  // leaves the half-plane at a itself
+        }
+      } else {
+        s.next.push_back(a);
+      }
+    } else if (sm < 0) {
+      const Point2& b = s.poly[m].y;
+      s.next.push_back({a.y + (sk / (sk - sm)) * (b - a.y), -1.0, a.label});
+    }
+  }
+  s.poly.swap(s.next);
+  return true;
+}
+
+/// Integrals over triangle (q0, q1, q2) (relative to the site) of rho (linear, values r0 r1 r2),
+/// rho y and rho |y|^2, added to mass, shift, energy; returns the signed area.
+inline double integrate(const Point2& q0, const Point2& q1, const Point2& q2, double r0, double r1, double r2, double& mass,
+                        Point2& shift, double& energy) {
+  const double area = 0.5 * ((q1 - q0).x() * (q2 - q0).y() - (q1 - q0).y() * (q2 - q0).x());
   const double rs = r0 + r1 + r2;
+  const Point2 qs = q0 + q1 + q2;
   mass += area * rs / 3.0;
-  moment += (area / 12.0) * (rs * (s + p1 + p2) + r0 * s + r1 * p1 + r2 * p2);
-  const double q11 = q1.squaredNorm(), q22 = q2.squaredNorm(), q12 = q1.dot(q2);
-  energy += (area / 60.0) *
-            (r0 * 2.0 * (q11 + q22 + q12) + r1 * (6.0 * q11 + 2.0 * q22 + 4.0 * q12) + r2 * (2.0 * q11 + 6.0 * q22 + 4.0 * q12));
+  shift += (area / 12.0) * (rs * qs + r0 * q0 + r1 * q1 + r2 * q2);
+  // With int lambda_m lambda_k lambda_l = A/10 (m = k = l), A/30 (two equal), A/60 (distinct):
+  // int rho |y|^2 = A/30 sum_m r_m (Q + q_m.(q_m + qs)), Q = (|qs|^2 + sum_k |q_k|^2) / 2.
+  const double Q = 0.5 * (qs.squaredNorm() + q0.squaredNorm() + q1.squaredNorm() + q2.squaredNorm());
+  energy += (area / 30.0) * (r0 * (Q + q0.dot(q0 + qs)) + r1 * (Q + q1.dot(q1 + qs)) + r2 * (Q + q2.dot(q2 + qs)));
   return area;
 }
 
-/// Where the perpendicular bisector of ab meets the line bc, as b + t (c - b).
-inline Point2 bisector_on_edge(const Point2& a, const Point2& b, const Point2& c) {
-  const Point2 d = c - b;
-  const double t = (b - a).squaredNorm() / (2.0 * d.dot(a - b));
-  return b + t * d;
+/// The sites: every vertex with faces (faces == nullptr), or the vertices of the faces and two
+/// rings around them.
+void collect_sites(const Mesh& mesh, const std::vector<FaceHandle>* faces, CellScratch& s) {
+  s.site_vertex.clear();
+  if (!faces) {
+    for (auto vh : mesh.vertices())
+      if (!mesh.status(vh).deleted() && !mesh.is_isolated(vh)) s.site_vertex.push_back(vh.idx());
+    return;
+  }
+  s.vertex_stamp.resize(mesh.n_vertices(), 0);
+  if (++s.vertex_counter == 0) {
+    std::fill(s.vertex_stamp.begin(), s.vertex_stamp.end(), 0u);
+    s.vertex_counter = 1;
+  }
+  s.ring.clear();
+  auto take = [&](VertexHandle vh) {
+    auto& st = s.vertex_stamp[static_cast<std::size_t>(vh.idx())];
+    if (st == s.vertex_counter) return;
+    st = s.vertex_counter;
+    s.site_vertex.push_back(vh.idx());
+    s.next_ring.push_back(vh.idx());
+  };
+  s.next_ring.clear();
+  for (FaceHandle fh : *faces)
+    for (auto vh : mesh.fv_range(fh)) take(vh);
+  for (int ring = 0; ring < 2; ++ring) {
+    s.ring.swap(s.next_ring);
+    s.next_ring.clear();
+    for (int v : s.ring)
+      for (auto w : mesh.vv_range(VertexHandle(v))) take(w);
+  }
 }
 
 }  // namespace
 
-std::array<std::vector<Point2>, 3> triangle_pieces(const Point2& a, const Point2& b, const Point2& c) {
-  const Point2 p[3] = {a, b, c};
-  const Point2 m[3] = {0.5 * (b + c), 0.5 * (c + a), 0.5 * (a + b)};  // m[i] opposite corner i
-  std::array<std::vector<Point2>, 3> out;
-  int obtuse = -1;
-  for (int i = 0; i < 3; ++i)
-    if ((p[(i + 1) % 3] - p[i]).dot(p[(i + 2) % 3] - p[i]) < 0) obtuse = i;
-  if (obtuse < 0) {
-    const Point2 o = circumcenter(a, b, c);
-    for (int i = 0; i < 3; ++i) out[static_cast<std::size_t>(i)] = {p[i], m[(i + 2) % 3], o, m[(i + 1) % 3]};
-    return out;
-  }
-  const int i = obtuse, j = (i + 1) % 3, k = (i + 2) % 3;
-  const Point2 pj = bisector_on_edge(p[i], p[j], p[k]);  // on jk, equidistant from i and j
-  const Point2 pk = bisector_on_edge(p[i], p[k], p[j]);  // on jk, equidistant from i and k
-  out[static_cast<std::size_t>(i)] = {p[i], m[k], pj, pk, m[j]};
-  out[static_cast<std::size_t>(j)] = {p[j], pj, m[k]};
-  out[static_cast<std::size_t>(k)] = {p[k], m[j], pk};
-  return out;
-}
+CellWorkspace::CellWorkspace() : scratch(std::make_unique<detail::CellScratch>()) {}
+CellWorkspace::~CellWorkspace() = default;
+CellWorkspace::CellWorkspace(CellWorkspace&&) noexcept = default;
+CellWorkspace& CellWorkspace::operator=(CellWorkspace&&) noexcept = default;
+std::size_t CellWorkspace::delaunay_rebuilds() const { return scratch ? scratch->delaunay.rebuilds() : 0; }
+std::size_t CellWorkspace::delaunay_flips() const { return scratch ? scratch->delaunay.flips() : 0; }
 
 void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out, CellWorkspace& ws, const std::vector<FaceHandle>* faces) {
   const std::size_t nv = mesh.n_vertices();
   out.area.assign(nv, 0.0);
   out.mass.assign(nv, 0.0);
   out.moment.assign(nv, Point2(0, 0));
+  out.shift.assign(nv, Point2(0, 0));
   out.energy = 0;
   out.total_area = 0;
+  out.pieces = 0;
+  if (!ws.scratch) ws.scratch = std::make_unique<detail::CellScratch>();
+  CellScratch& s = *ws.scratch;
+
+  // The sites and their Delaunay triangulation.
+  collect_sites(mesh, faces, s);
+  const std::size_t ns = s.site_vertex.size();
+  s.points.resize(ns);
+  for (std::size_t i = 0; i < ns; ++i) s.points[i] = point2(mesh, VertexHandle(s.site_vertex[i]));
+  const bool same_sites = !faces && s.site_vertex == s.previous_site_vertex;
+  if (ns >= 3) s.delaunay.update(s.points, same_sites);
+  s.previous_site_vertex = s.site_vertex;
+  s.vertex_site.assign(nv, -1);
+  for (std::size_t i = 0; i < ns; ++i) s.vertex_site[static_cast<std::size_t>(s.site_vertex[i])] = static_cast<int>(i);
+
+  // rho at the sites.
   const bool uniform = field.is_uniform();
   auto rho_of_h = [](double h) { return 1.0 / ((h * h) * (h * h)); };
   const double rho_u = rho_of_h(field.max_value());
   if (ws.vertex_hint.size() != nv) ws.vertex_hint.assign(nv, -1);
   ws.vertex_rho.resize(nv);
-  auto vertex_rho = [&](VertexHandle vh) {
-    const auto i = static_cast<std::size_t>(vh.idx());
-    ws.vertex_rho[i] = uniform ? rho_u : rho_of_h(field.eval(point2(mesh, vh), ws.vertex_hint[i]));
-  };
-  if (faces) {
-    for (FaceHandle fh : *faces)
-      for (auto vh : mesh.fv_range(fh)) vertex_rho(vh);
-  } else {
-    for (auto vh : mesh.vertices()) vertex_rho(vh);
+  s.site_rho.resize(ns);
+  for (std::size_t i = 0; i < ns; ++i) {
+    const auto v = static_cast<std::size_t>(s.site_vertex[i]);
+    s.site_rho[i] = ws.vertex_rho[v] = uniform ? rho_u : rho_of_h(field.eval(s.points[i], ws.vertex_hint[v]));
   }
+  if (ns < 3) return;  // no triangle
 
+  s.stamp.resize(ns, 0);
   auto process = [&](FaceHandle fh) {
-    VertexHandle v[3];
+    int site[3];
     Point2 p[3];
-    double r[3];
     {
       auto h = mesh.halfedge_handle(fh);
-      for (int i = 0; i < 3; ++i, h = mesh.next_halfedge_handle(h)) {
-        v[i] = mesh.to_vertex_handle(h);
-        p[i] = point2(mesh, v[i]);
-        r[i] = ws.vertex_rho[static_cast<std::size_t>(v[i].idx())];
+      for (int k = 0; k < 3; ++k, h = mesh.next_halfedge_handle(h)) {
+        const VertexHandle vh = mesh.to_vertex_handle(h);
+        site[k] = s.vertex_site[static_cast<std::size_t>(vh.idx())];
+        p[k] = point2(mesh, vh);
       }
-    }
-    int hint = uniform ? -1 : ws.vertex_hint[static_cast<std::size_t>(v[0].idx())];
-    auto rho_at = [&](const Point2& x) { return uniform ? rho_u : rho_of_h(field.eval(x, hint)); };
-    const Point2 m[3] = {0.5 * (p[1] + p[2]), 0.5 * (p[2] + p[0]), 0.5 * (p[0] + p[1])};  // opposite corner i
-    const double rm[3] = {rho_at(m[0]), rho_at(m[1]), rho_at(m[2])};
-    int obtuse = -1;
-    for (int i = 0; i < 3; ++i)
-      if ((p[(i + 1) % 3] - p[i]).dot(p[(i + 2) % 3] - p[i]) < 0) obtuse = i;
-    auto acc = [&](int site, const Point2& q1, const Point2& q2, double r1, double r2) {
-      const auto s = static_cast<std::size_t>(v[site].idx());
-      out.area[s] += integrate(p[site], q1, q2, r[site], r1, r2, out.mass[s], out.moment[s], out.energy);
-    };
-    if (obtuse < 0) {
-      const Point2 o = circumcenter(p[0], p[1], p[2]);
-      const double ro = rho_at(o);
-      for (int i = 0; i < 3; ++i) {
-        const int j = (i + 1) % 3, k = (i + 2) % 3;
-        acc(i, m[k], o, rm[k], ro);  // (i, m_ij, o)
-        acc(i, o, m[j], ro, rm[j]);  // (i, o, m_ki)
-      }
-    } else {
-      const int i = obtuse, j = (i + 1) % 3, k = (i + 2) % 3;
-      const Point2 pj = bisector_on_edge(p[i], p[j], p[k]), pk = bisector_on_edge(p[i], p[k], p[j]);
-      const double rpj = rho_at(pj), rpk = rho_at(pk);
-      acc(i, m[k], pj, rm[k], rpj);
-      acc(i, pj, pk, rpj, rpk);
-      acc(i, pk, m[j], rpk, rm[j]);
-      acc(j, pj, m[k], rpj, rm[k]);
-      acc(k, m[j], pk, rm[j], rpk);
     }
     out.total_area += 0.5 * signed_area2(p[0], p[1], p[2]);
+    if (++s.counter == 0) {
+      std::fill(s.stamp.begin(), s.stamp.end(), 0u);
+      s.counter = 1;
+    }
+    s.queue.clear();
+    for (int k : site) {
+      s.stamp[static_cast<std::size_t>(k)] = s.counter;
+      s.queue.push_back(k);
+    }
+    int hint = uniform ? -1 : ws.vertex_hint[static_cast<std::size_t>(s.site_vertex[static_cast<std::size_t>(site[0])])];
+    while (!s.queue.empty()) {
+      const int i = s.queue.back();
+      s.queue.pop_back();
+      const Point2 x = s.points[static_cast<std::size_t>(i)];
+      s.poly.clear();
+      for (int k = 0; k < 3; ++k) s.poly.push_back({p[k] - x, s.site_rho[static_cast<std::size_t>(site[k])], -1});
+      const auto [nb, nb_end] = s.delaunay.neighbours(i);
+      for (const int* j = nb; j != nb_end && s.poly.size() >= 3; ++j) clip(s, s.points[static_cast<std::size_t>(*j)] - x, *j);
+      if (s.poly.size() < 3) continue;
+      for (auto& c : s.poly)
+        if (c.rho < 0) c.rho = uniform ? rho_u : rho_of_h(field.eval(x + c.y, hint));
+      const auto v = static_cast<std::size_t>(s.site_vertex[static_cast<std::size_t>(i)]);
+      double area = 0, mass = 0, energy = 0;
+      Point2 shift(0, 0);
+      for (std::size_t k = 1; k + 1 < s.poly.size(); ++k)
+        area += integrate(s.poly[0].y, s.poly[k].y, s.poly[k + 1].y, s.poly[0].rho, s.poly[k].rho, s.poly[k + 1].rho, mass, shift, energy);
+      if (!(area > 0)) continue;  // a sliver of rounding: nothing behind it
+      out.area[v] += area;
+      out.mass[v] += mass;
+      out.shift[v] += shift;
+      out.energy += energy;
+      ++out.pieces;
+      for (const auto& c : s.poly) {
+        if (c.label < 0) continue;
+        auto& st = s.stamp[static_cast<std::size_t>(c.label)];
+        if (st == s.counter) continue;
+        st = s.counter;
+        s.queue.push_back(c.label);
+      }
+    }
   };
   if (faces) {
     for (FaceHandle fh : *faces) process(fh);
   } else {
     for (auto fh : mesh.faces()) process(fh);
+  }
+  for (std::size_t i = 0; i < ns; ++i) {
+    const auto v = static_cast<std::size_t>(s.site_vertex[i]);
+    out.moment[v] = out.shift[v] + out.mass[v] * s.points[i];
   }
 }
 
