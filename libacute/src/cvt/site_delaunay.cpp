@@ -126,6 +126,9 @@ void SiteDelaunay::build_adjacency() {
     }
   for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
   adjacent_.resize(static_cast<std::size_t>(start_[n]));
+  vertex_tri_.assign(n, -1);
+  for (std::size_t t = 0; t < tri_.size(); ++t)
+    for (int v : tri_[t]) vertex_tri_[static_cast<std::size_t>(v)] = static_cast<int>(t);
   incident_start_.assign(start_.begin(), start_.end() - 1);  // fill cursor
   for (std::size_t t = 0; t < tri_.size(); ++t)
     for (int i = 0; i < 3; ++i) {

@@ -29,6 +29,12 @@ class SiteDelaunay {
     return {adjacent_.data() + b, adjacent_.data() + e};
   }
 
+  const std::vector<std::array<int, 3>>& triangles() const { return tri_; }
+  /// The triangle across the edge opposite corner i of t; -1 on the hull.
+  int across(int t, int i) const { return nbr_[static_cast<std::size_t>(t)][static_cast<std::size_t>(i)]; }
+  /// A triangle incident to site i (-1 if none).
+  int vertex_triangle(int i) const { return vertex_tri_[static_cast<std::size_t>(i)]; }
+
   std::size_t rebuilds() const { return rebuilds_; }
   std::size_t flips() const { return flips_; }
 
@@ -43,6 +49,7 @@ class SiteDelaunay {
   std::vector<std::array<int, 3>> tri_;  ///< counter-clockwise vertex ids
   std::vector<std::array<int, 3>> nbr_;  ///< nbr_[t][i]: across the edge opposite corner i; -1 on the hull
   std::vector<int> start_, adjacent_;    ///< CSR of the neighbours
+  std::vector<int> vertex_tri_;
   std::vector<int> incident_start_, incident_;  ///< rebuild scratch: triangles around each vertex
   std::vector<std::pair<int, int>> stack_;      ///< (triangle, edge) to check
   std::size_t rebuilds_ = 0, flips_ = 0;

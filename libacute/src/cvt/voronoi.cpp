@@ -4,6 +4,7 @@
 
 #include <acute/mesh/geometry.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -29,6 +30,12 @@ struct CellScratch {
   };
   std::vector<Corner> poly, next;
   std::vector<double> side;
+  std::vector<Point2> centre;     ///< per Delaunay triangle: circumcentre (a Voronoi vertex)
+  std::vector<char> centre_ok;    ///< finite (the computed orientation was positive)
+  std::vector<double> centre_rho; ///< rho there (< 0: not yet evaluated)
+  std::vector<char> whole;        ///< per site: the cell lies inside the vertex's star (integrated whole)
+  std::vector<char> calm;         ///< per site: whole, and so are all its Delaunay neighbours
+  std::vector<int> fan;           ///< Delaunay triangles around a site, counter-clockwise
   std::vector<unsigned> vertex_stamp;  ///< local mode: ring collection
   unsigned vertex_counter = 0;
   std::vector<int> ring, next_ring;
@@ -93,6 +100,100 @@ inline double integrate(const Point2& q0, const Point2& q1, const Point2& q2, do
   const double Q = 0.5 * (qs.squaredNorm() + q0.squaredNorm() + q1.squaredNorm() + q2.squaredNorm());
   energy += (area / 30.0) * (r0 * (Q + q0.dot(q0 + qs)) + r1 * (Q + q1.dot(q1 + qs)) + r2 * (Q + q2.dot(q2 + qs)));
   return area;
+}
+
+/// Squared distance from p to segment ab.
+inline double distance2_to_segment(const Point2& p, const Point2& a, const Point2& b) {
+  const Point2 ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).squaredNorm();
+}
+
+/// Whole cells: a site whose Voronoi cell V (the polygon of the circumcentres around it in the
+/// Delaunay triangulation) lies within the disk B(x, r) inscribed in its mesh star (r: distance
+/// to the star's outer edges; the star is star-shaped from x, so B is inside it) has V inside
+/// the domain: it is integrated whole, as a fan from x. Such a cell meets only the triangles of
+/// its star, so a triangle whose corners and their Delaunay neighbours all have whole cells holds
+/// no other piece and is skipped (in a well-spread mesh, most of the interior).
+void integrate_whole_cells(const Mesh& mesh, const SizeField& field, CellScratch& s, CellIntegrals& out, std::vector<int>& hints,
+                           double rho_u) {
+  const bool uniform = field.is_uniform();
+  const auto& tris = s.delaunay.triangles();
+  const std::size_t nt = tris.size(), ns = s.site_vertex.size();
+  s.centre.resize(nt);
+  s.centre_ok.resize(nt);
+  s.centre_rho.assign(nt, -1.0);
+  for (std::size_t t = 0; t < nt; ++t) {
+    const Point2& a = s.points[static_cast<std::size_t>(tris[t][0])];
+    const Point2 b = s.points[static_cast<std::size_t>(tris[t][1])] - a, c = s.points[static_cast<std::size_t>(tris[t][2])] - a;
+    const double d = 2.0 * (b.x() * c.y() - b.y() * c.x());
+    const Point2 u((c.y() * b.squaredNorm() - b.y() * c.squaredNorm()) / d, (b.x() * c.squaredNorm() - c.x() * b.squaredNorm()) / d);
+    s.centre_ok[t] = d > 0 && u.allFinite();
+    s.centre[t] = s.centre_ok[t] ? Point2(a + u) : a;
+  }
+  s.whole.assign(ns, 0);
+  for (std::size_t i = 0; i < ns; ++i) {
+    const VertexHandle vh(s.site_vertex[i]);
+    if (mesh.is_boundary(vh)) continue;
+    const Point2 x = s.points[i];
+    // The Delaunay triangles around i, counter-clockwise; the site is on the hull if the turn breaks.
+    s.fan.clear();
+    const int t0 = s.delaunay.vertex_triangle(static_cast<int>(i));
+    int t = t0;
+    double R2 = 0;
+    bool closed = false;
+    for (std::size_t guard = 0; guard < 4096 && t >= 0; ++guard) {
+      if (!s.centre_ok[static_cast<std::size_t>(t)]) break;
+      s.fan.push_back(t);
+      R2 = std::max(R2, (s.centre[static_cast<std::size_t>(t)] - x).squaredNorm());
+      const auto& tv = tris[static_cast<std::size_t>(t)];
+      const int k = tv[0] == static_cast<int>(i) ? 0 : (tv[1] == static_cast<int>(i) ? 1 : 2);
+      t = s.delaunay.across(t, (k + 1) % 3);  // across the edge from i to the corner after next
+      if (t == t0) {
+        closed = true;
+        break;
+      }
+    }
+    if (!closed || s.fan.size() < 3) continue;
+    double r2 = std::numeric_limits<double>::infinity();
+    for (auto h : mesh.voh_range(vh)) {
+      const auto nh = mesh.next_halfedge_handle(h);
+      r2 = std::min(r2, distance2_to_segment(x, point2(mesh, mesh.from_vertex_handle(nh)), point2(mesh, mesh.to_vertex_handle(nh))));
+    }
+    if (!(R2 < r2 * (1 - 1e-9))) continue;
+    s.whole[i] = 1;
+    const auto v = static_cast<std::size_t>(s.site_vertex[i]);
+    int hint = hints[v];
+    double area = 0, mass = 0, energy = 0;
+    Point2 shift(0, 0);
+    auto rho_at = [&](int tri) {
+      double& r = s.centre_rho[static_cast<std::size_t>(tri)];
+      if (r < 0) {
+        const double h = field.eval(s.centre[static_cast<std::size_t>(tri)], hint);
+        r = 1.0 / ((h * h) * (h * h));
+      }
+      return r;
+    };
+    for (std::size_t k = 0; k < s.fan.size(); ++k) {
+      const int ta = s.fan[k], tb = s.fan[k + 1 == s.fan.size() ? 0 : k + 1];
+      area += integrate(Point2(0, 0), s.centre[static_cast<std::size_t>(ta)] - x, s.centre[static_cast<std::size_t>(tb)] - x, s.site_rho[i],
+                        uniform ? rho_u : rho_at(ta), uniform ? rho_u : rho_at(tb), mass, shift, energy);
+    }
+    out.area[v] += area;
+    out.mass[v] += mass;
+    out.shift[v] += shift;
+    out.energy += energy;
+    ++out.pieces;
+  }
+  s.calm.assign(ns, 0);
+  for (std::size_t i = 0; i < ns; ++i) {
+    if (!s.whole[i]) continue;
+    bool calm = true;
+    const auto [nb, nb_end] = s.delaunay.neighbours(static_cast<int>(i));
+    for (const int* j = nb; j != nb_end && calm; ++j) calm = s.whole[static_cast<std::size_t>(*j)] != 0;
+    s.calm[i] = calm;
+  }
 }
 
 /// The sites: every vertex with faces (faces == nullptr), or the vertices of the faces and two
@@ -172,6 +273,12 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
     s.site_rho[i] = ws.vertex_rho[v] = uniform ? rho_u : rho_of_h(field.eval(s.points[i], ws.vertex_hint[v]));
   }
   if (ns < 3) return;  // no triangle
+  if (!faces) {
+    integrate_whole_cells(mesh, field, s, out, ws.vertex_hint, rho_u);
+  } else {
+    s.whole.assign(ns, 0);  // pieces restricted to the faces: every cell by its pieces
+    s.calm.assign(ns, 0);
+  }
 
   s.stamp.resize(ns, 0);
   auto process = [&](FaceHandle fh) {
@@ -186,6 +293,7 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
       }
     }
     out.total_area += 0.5 * signed_area2(p[0], p[1], p[2]);
+    if (s.calm[static_cast<std::size_t>(site[0])] && s.calm[static_cast<std::size_t>(site[1])] && s.calm[static_cast<std::size_t>(site[2])]) return;
     if (++s.counter == 0) {
       std::fill(s.stamp.begin(), s.stamp.end(), 0u);
       s.counter = 1;
@@ -196,6 +304,16 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
       s.queue.push_back(k);
     }
     int hint = uniform ? -1 : ws.vertex_hint[static_cast<std::size_t>(s.site_vertex[static_cast<std::size_t>(site[0])])];
+    // The sites whose bisector bounds the piece just clipped (their cells meet T too).
+    auto push_neighbours = [&]() {
+      for (const auto& c : s.poly) {
+        if (c.label < 0) continue;
+        auto& st = s.stamp[static_cast<std::size_t>(c.label)];
+        if (st == s.counter) continue;
+        st = s.counter;
+        s.queue.push_back(c.label);
+      }
+    };
     while (!s.queue.empty()) {
       const int i = s.queue.back();
       s.queue.pop_back();
@@ -205,6 +323,10 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
       const auto [nb, nb_end] = s.delaunay.neighbours(i);
       for (const int* j = nb; j != nb_end && s.poly.size() >= 3; ++j) clip(s, s.points[static_cast<std::size_t>(*j)] - x, *j);
       if (s.poly.size() < 3) continue;
+      if (s.whole[static_cast<std::size_t>(i)]) {  // integrated already: only its neighbours matter
+        push_neighbours();
+        continue;
+      }
       for (auto& c : s.poly)
         if (c.rho < 0) c.rho = uniform ? rho_u : rho_of_h(field.eval(x + c.y, hint));
       const auto v = static_cast<std::size_t>(s.site_vertex[static_cast<std::size_t>(i)]);
@@ -218,13 +340,7 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
       out.shift[v] += shift;
       out.energy += energy;
       ++out.pieces;
-      for (const auto& c : s.poly) {
-        if (c.label < 0) continue;
-        auto& st = s.stamp[static_cast<std::size_t>(c.label)];
-        if (st == s.counter) continue;
-        st = s.counter;
-        s.queue.push_back(c.label);
-      }
+      push_neighbours();
     }
   };
   if (faces) {
