@@ -11,11 +11,24 @@
 namespace acute {
 namespace detail {
 
-struct CellScratch {
+/// The Delaunay triangulation of one region's sites, kept for the next call.
+struct RegionDelaunay {
   SiteDelaunay delaunay;
-  std::vector<int> site_vertex, previous_site_vertex;  ///< site -> vertex idx
-  std::vector<int> vertex_site;                        ///< vertex idx -> site or -1
-  std::vector<Point2> points;                          ///< site positions
+  std::vector<int> previous_sites;
+};
+
+struct CellScratch {
+  std::vector<RegionDelaunay> regions;  ///< full mode, in discovery order
+  RegionDelaunay local;                 ///< local mode (rebuilt every call)
+  SiteDelaunay* delaunay = nullptr;     ///< the current region's
+  std::size_t rebuilds = 0, flips = 0;  ///< over every region so far
+  std::vector<int> face_region;          ///< per face: region id, -1 not reached
+  std::vector<int> region_faces, expanded_faces, flood;
+  std::vector<unsigned> face_stamp, vertex_stamp;
+  unsigned face_counter = 0, vertex_counter = 0;
+  std::vector<int> site_vertex;          ///< the current region's sites (vertex idx)
+  std::vector<int> vertex_site;          ///< vertex idx -> site of the current region or -1
+  std::vector<Point2> points;            ///< site positions
   std::vector<double> site_rho;
   std::vector<unsigned> stamp;  ///< per site: the triangle that last queued it
   unsigned counter = 0;
@@ -36,9 +49,6 @@ struct CellScratch {
   std::vector<char> whole;        ///< per site: the cell lies inside the vertex's star (integrated whole)
   std::vector<char> calm;         ///< per site: whole, and so are all its Delaunay neighbours
   std::vector<int> fan;           ///< Delaunay triangles around a site, counter-clockwise
-  std::vector<unsigned> vertex_stamp;  ///< local mode: ring collection
-  unsigned vertex_counter = 0;
-  std::vector<int> ring, next_ring;
 };
 
 }  // namespace detail
@@ -46,6 +56,7 @@ struct CellScratch {
 namespace {
 
 using detail::CellScratch;
+using detail::RegionDelaunay;
 using Corner = CellScratch::Corner;
 
 /// Keeps the part of `poly` where y.d <= |d|^2 / 2 (the side of the site against the site at
@@ -119,7 +130,7 @@ inline double distance2_to_segment(const Point2& p, const Point2& a, const Point
 void integrate_whole_cells(const Mesh& mesh, const SizeField& field, CellScratch& s, CellIntegrals& out, std::vector<int>& hints,
                            double rho_u) {
   const bool uniform = field.is_uniform();
-  const auto& tris = s.delaunay.triangles();
+  const auto& tris = s.delaunay->triangles();
   const std::size_t nt = tris.size(), ns = s.site_vertex.size();
   s.centre.resize(nt);
   s.centre_ok.resize(nt);
@@ -136,10 +147,13 @@ void integrate_whole_cells(const Mesh& mesh, const SizeField& field, CellScratch
   for (std::size_t i = 0; i < ns; ++i) {
     const VertexHandle vh(s.site_vertex[i]);
     if (mesh.is_boundary(vh)) continue;
+    bool on_constraint = false;
+    for (auto eh : mesh.ve_range(vh)) on_constraint = on_constraint || is_constrained(mesh, eh);
+    if (on_constraint) continue;  // its cell is cut by the segment
     const Point2 x = s.points[i];
     // The Delaunay triangles around i, counter-clockwise; the site is on the hull if the turn breaks.
     s.fan.clear();
-    const int t0 = s.delaunay.vertex_triangle(static_cast<int>(i));
+    const int t0 = s.delaunay->vertex_triangle(static_cast<int>(i));
     int t = t0;
     double R2 = 0;
     bool closed = false;
@@ -149,7 +163,7 @@ void integrate_whole_cells(const Mesh& mesh, const SizeField& field, CellScratch
       R2 = std::max(R2, (s.centre[static_cast<std::size_t>(t)] - x).squaredNorm());
       const auto& tv = tris[static_cast<std::size_t>(t)];
       const int k = tv[0] == static_cast<int>(i) ? 0 : (tv[1] == static_cast<int>(i) ? 1 : 2);
-      t = s.delaunay.across(t, (k + 1) % 3);  // across the edge from i to the corner after next
+      t = s.delaunay->across(t, (k + 1) % 3);  // across the edge from i to the corner after next
       if (t == t0) {
         closed = true;
         break;
@@ -190,42 +204,9 @@ void integrate_whole_cells(const Mesh& mesh, const SizeField& field, CellScratch
   for (std::size_t i = 0; i < ns; ++i) {
     if (!s.whole[i]) continue;
     bool calm = true;
-    const auto [nb, nb_end] = s.delaunay.neighbours(static_cast<int>(i));
+    const auto [nb, nb_end] = s.delaunay->neighbours(static_cast<int>(i));
     for (const int* j = nb; j != nb_end && calm; ++j) calm = s.whole[static_cast<std::size_t>(*j)] != 0;
     s.calm[i] = calm;
-  }
-}
-
-/// The sites: every vertex with faces (faces == nullptr), or the vertices of the faces and two
-/// rings around them.
-void collect_sites(const Mesh& mesh, const std::vector<FaceHandle>* faces, CellScratch& s) {
-  s.site_vertex.clear();
-  if (!faces) {
-    for (auto vh : mesh.vertices())
-      if (!mesh.status(vh).deleted() && !mesh.is_isolated(vh)) s.site_vertex.push_back(vh.idx());
-    return;
-  }
-  s.vertex_stamp.resize(mesh.n_vertices(), 0);
-  if (++s.vertex_counter == 0) {
-    std::fill(s.vertex_stamp.begin(), s.vertex_stamp.end(), 0u);
-    s.vertex_counter = 1;
-  }
-  s.ring.clear();
-  auto take = [&](VertexHandle vh) {
-    auto& st = s.vertex_stamp[static_cast<std::size_t>(vh.idx())];
-    if (st == s.vertex_counter) return;
-    st = s.vertex_counter;
-    s.site_vertex.push_back(vh.idx());
-    s.next_ring.push_back(vh.idx());
-  };
-  s.next_ring.clear();
-  for (FaceHandle fh : *faces)
-    for (auto vh : mesh.fv_range(fh)) take(vh);
-  for (int ring = 0; ring < 2; ++ring) {
-    s.ring.swap(s.next_ring);
-    s.next_ring.clear();
-    for (int v : s.ring)
-      for (auto w : mesh.vv_range(VertexHandle(v))) take(w);
   }
 }
 
@@ -235,57 +216,88 @@ CellWorkspace::CellWorkspace() : scratch(std::make_unique<detail::CellScratch>()
 CellWorkspace::~CellWorkspace() = default;
 CellWorkspace::CellWorkspace(CellWorkspace&&) noexcept = default;
 CellWorkspace& CellWorkspace::operator=(CellWorkspace&&) noexcept = default;
-std::size_t CellWorkspace::delaunay_rebuilds() const { return scratch ? scratch->delaunay.rebuilds() : 0; }
-std::size_t CellWorkspace::delaunay_flips() const { return scratch ? scratch->delaunay.flips() : 0; }
+std::size_t CellWorkspace::delaunay_rebuilds() const { return scratch ? scratch->rebuilds : 0; }
+std::size_t CellWorkspace::delaunay_flips() const { return scratch ? scratch->flips : 0; }
 
-void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out, CellWorkspace& ws, const std::vector<FaceHandle>* faces) {
-  const std::size_t nv = mesh.n_vertices();
-  out.area.assign(nv, 0.0);
-  out.mass.assign(nv, 0.0);
-  out.moment.assign(nv, Point2(0, 0));
-  out.shift.assign(nv, Point2(0, 0));
-  out.energy = 0;
-  out.total_area = 0;
-  out.pieces = 0;
-  if (!ws.scratch) ws.scratch = std::make_unique<detail::CellScratch>();
+namespace {
+
+bool crossable(const Mesh& mesh, HalfedgeHandle h) {
+  return !mesh.is_boundary(mesh.edge_handle(h)) && !is_constrained(mesh, mesh.edge_handle(h));
+}
+
+/// Flood fill from face f0 across unconstrained edges among the faces allowed (face_stamp ==
+/// allowed, or every face when allowed == 0); appends to s.region_faces and labels face_region.
+void flood_region(const Mesh& mesh, int f0, int region, CellScratch& s, unsigned allowed) {
+  s.region_faces.clear();
+  s.flood.assign(1, f0);
+  s.face_region[static_cast<std::size_t>(f0)] = region;
+  while (!s.flood.empty()) {
+    const int f = s.flood.back();
+    s.flood.pop_back();
+    s.region_faces.push_back(f);
+    for (auto h : mesh.fh_range(FaceHandle(f))) {
+      if (!crossable(mesh, h)) continue;
+      const int g = mesh.face_handle(mesh.opposite_halfedge_handle(h)).idx();
+      if (g < 0 || s.face_region[static_cast<std::size_t>(g)] != -1) continue;
+      if (allowed && s.face_stamp[static_cast<std::size_t>(g)] != allowed) continue;
+      s.face_region[static_cast<std::size_t>(g)] = region;
+      s.flood.push_back(g);
+    }
+  }
+}
+
+unsigned next_stamp(std::vector<unsigned>& stamps, unsigned& counter, std::size_t size) {
+  stamps.resize(size, 0);
+  if (++counter == 0) {
+    std::fill(stamps.begin(), stamps.end(), 0u);
+    counter = 1;
+  }
+  return counter;
+}
+
+/// Cells of one region: sites = the vertices of `site_faces`, pieces over s.region_faces.
+void region_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out, CellWorkspace& ws, const std::vector<int>& site_faces,
+                  RegionDelaunay& rd, bool persistent, bool whole_cells, double rho_u) {
   CellScratch& s = *ws.scratch;
-
-  // The sites and their Delaunay triangulation.
-  collect_sites(mesh, faces, s);
+  const unsigned vs = next_stamp(s.vertex_stamp, s.vertex_counter, mesh.n_vertices());
+  s.site_vertex.clear();
+  for (int f : site_faces)
+    for (auto vh : mesh.fv_range(FaceHandle(f))) {
+      auto& st = s.vertex_stamp[static_cast<std::size_t>(vh.idx())];
+      if (st == vs) continue;
+      st = vs;
+      s.site_vertex.push_back(vh.idx());
+    }
   const std::size_t ns = s.site_vertex.size();
+  if (ns < 3) return;
   s.points.resize(ns);
-  for (std::size_t i = 0; i < ns; ++i) s.points[i] = point2(mesh, VertexHandle(s.site_vertex[i]));
-  const bool same_sites = !faces && s.site_vertex == s.previous_site_vertex;
-  if (ns >= 3) s.delaunay.update(s.points, same_sites);
-  s.previous_site_vertex = s.site_vertex;
-  s.vertex_site.assign(nv, -1);
-  for (std::size_t i = 0; i < ns; ++i) s.vertex_site[static_cast<std::size_t>(s.site_vertex[i])] = static_cast<int>(i);
-
-  // rho at the sites.
-  const bool uniform = field.is_uniform();
-  auto rho_of_h = [](double h) { return 1.0 / ((h * h) * (h * h)); };
-  const double rho_u = rho_of_h(field.max_value());
-  if (ws.vertex_hint.size() != nv) ws.vertex_hint.assign(nv, -1);
-  ws.vertex_rho.resize(nv);
   s.site_rho.resize(ns);
   for (std::size_t i = 0; i < ns; ++i) {
     const auto v = static_cast<std::size_t>(s.site_vertex[i]);
-    s.site_rho[i] = ws.vertex_rho[v] = uniform ? rho_u : rho_of_h(field.eval(s.points[i], ws.vertex_hint[v]));
+    s.points[i] = point2(mesh, VertexHandle(s.site_vertex[i]));
+    s.site_rho[i] = ws.vertex_rho[v];
+    s.vertex_site[v] = static_cast<int>(i);
   }
-  if (ns < 3) return;  // no triangle
-  if (!faces) {
+  const std::size_t r0 = rd.delaunay.rebuilds(), f0 = rd.delaunay.flips();
+  rd.delaunay.update(s.points, persistent && s.site_vertex == rd.previous_sites);
+  s.rebuilds += rd.delaunay.rebuilds() - r0;
+  s.flips += rd.delaunay.flips() - f0;
+  if (persistent) rd.previous_sites = s.site_vertex;
+  s.delaunay = &rd.delaunay;
+  const bool uniform = field.is_uniform();
+  if (whole_cells) {
     integrate_whole_cells(mesh, field, s, out, ws.vertex_hint, rho_u);
   } else {
-    s.whole.assign(ns, 0);  // pieces restricted to the faces: every cell by its pieces
+    s.whole.assign(ns, 0);
     s.calm.assign(ns, 0);
   }
-
+  auto rho_of_h = [](double h) { return 1.0 / ((h * h) * (h * h)); };
   s.stamp.resize(ns, 0);
-  auto process = [&](FaceHandle fh) {
+  for (int f : s.region_faces) {
     int site[3];
     Point2 p[3];
     {
-      auto h = mesh.halfedge_handle(fh);
+      auto h = mesh.halfedge_handle(FaceHandle(f));
       for (int k = 0; k < 3; ++k, h = mesh.next_halfedge_handle(h)) {
         const VertexHandle vh = mesh.to_vertex_handle(h);
         site[k] = s.vertex_site[static_cast<std::size_t>(vh.idx())];
@@ -293,7 +305,7 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
       }
     }
     out.total_area += 0.5 * signed_area2(p[0], p[1], p[2]);
-    if (s.calm[static_cast<std::size_t>(site[0])] && s.calm[static_cast<std::size_t>(site[1])] && s.calm[static_cast<std::size_t>(site[2])]) return;
+    if (s.calm[static_cast<std::size_t>(site[0])] && s.calm[static_cast<std::size_t>(site[1])] && s.calm[static_cast<std::size_t>(site[2])]) continue;
     if (++s.counter == 0) {
       std::fill(s.stamp.begin(), s.stamp.end(), 0u);
       s.counter = 1;
@@ -304,7 +316,7 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
       s.queue.push_back(k);
     }
     int hint = uniform ? -1 : ws.vertex_hint[static_cast<std::size_t>(s.site_vertex[static_cast<std::size_t>(site[0])])];
-    // The sites whose bisector bounds the piece just clipped (their cells meet T too).
+    // The sites whose bisector bounds the piece just clipped (their cells meet the triangle too).
     auto push_neighbours = [&]() {
       for (const auto& c : s.poly) {
         if (c.label < 0) continue;
@@ -320,7 +332,7 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
       const Point2 x = s.points[static_cast<std::size_t>(i)];
       s.poly.clear();
       for (int k = 0; k < 3; ++k) s.poly.push_back({p[k] - x, s.site_rho[static_cast<std::size_t>(site[k])], -1});
-      const auto [nb, nb_end] = s.delaunay.neighbours(i);
+      const auto [nb, nb_end] = s.delaunay->neighbours(i);
       for (const int* j = nb; j != nb_end && s.poly.size() >= 3; ++j) clip(s, s.points[static_cast<std::size_t>(*j)] - x, *j);
       if (s.poly.size() < 3) continue;
       if (s.whole[static_cast<std::size_t>(i)]) {  // integrated already: only its neighbours matter
@@ -342,15 +354,87 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
       ++out.pieces;
       push_neighbours();
     }
-  };
-  if (faces) {
-    for (FaceHandle fh : *faces) process(fh);
-  } else {
-    for (auto fh : mesh.faces()) process(fh);
   }
-  for (std::size_t i = 0; i < ns; ++i) {
-    const auto v = static_cast<std::size_t>(s.site_vertex[i]);
-    out.moment[v] = out.shift[v] + out.mass[v] * s.points[i];
+  for (int v : s.site_vertex) s.vertex_site[static_cast<std::size_t>(v)] = -1;
+}
+
+}  // namespace
+
+void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out, CellWorkspace& ws, const std::vector<FaceHandle>* faces) {
+  const std::size_t nv = mesh.n_vertices(), nf = mesh.n_faces();
+  out.area.assign(nv, 0.0);
+  out.mass.assign(nv, 0.0);
+  out.moment.assign(nv, Point2(0, 0));
+  out.shift.assign(nv, Point2(0, 0));
+  out.energy = 0;
+  out.total_area = 0;
+  out.pieces = 0;
+  if (!ws.scratch) ws.scratch = std::make_unique<detail::CellScratch>();
+  CellScratch& s = *ws.scratch;
+
+  // rho at the vertices.
+  const bool uniform = field.is_uniform();
+  auto rho_of_h = [](double h) { return 1.0 / ((h * h) * (h * h)); };
+  const double rho_u = rho_of_h(field.max_value());
+  if (ws.vertex_hint.size() != nv) ws.vertex_hint.assign(nv, -1);
+  ws.vertex_rho.resize(nv);
+  auto set_rho = [&](VertexHandle vh) {
+    const auto i = static_cast<std::size_t>(vh.idx());
+    ws.vertex_rho[i] = uniform ? rho_u : rho_of_h(field.eval(point2(mesh, vh), ws.vertex_hint[i]));
+  };
+  s.vertex_site.assign(nv, -1);
+  s.face_region.assign(nf, -1);
+
+  if (!faces) {
+    for (auto vh : mesh.vertices())
+      if (!mesh.status(vh).deleted()) set_rho(vh);
+    int region = 0;
+    for (auto fh : mesh.faces()) {
+      if (mesh.status(fh).deleted() || s.face_region[static_cast<std::size_t>(fh.idx())] != -1) continue;
+      flood_region(mesh, fh.idx(), region, s, 0);
+      if (s.regions.size() <= static_cast<std::size_t>(region)) s.regions.emplace_back();
+      region_cells(mesh, field, out, ws, s.region_faces, s.regions[static_cast<std::size_t>(region)], true, true, rho_u);
+      ++region;
+    }
+  } else {
+    unsigned allowed = next_stamp(s.face_stamp, s.face_counter, nf);
+    for (FaceHandle fh : *faces) s.face_stamp[static_cast<std::size_t>(fh.idx())] = allowed;
+    for (FaceHandle fh : *faces)
+      for (auto vh : mesh.fv_range(fh)) set_rho(vh);
+    int region = 0;
+    for (FaceHandle fh : *faces) {
+      if (s.face_region[static_cast<std::size_t>(fh.idx())] != -1) continue;
+      flood_region(mesh, fh.idx(), region++, s, allowed);
+      // The sites: the region's vertices and those of the faces up to four steps further on
+      // its side of the constraints.
+      const unsigned seen = next_stamp(s.face_stamp, s.face_counter, nf);
+      s.expanded_faces = s.region_faces;
+      for (int f : s.expanded_faces) s.face_stamp[static_cast<std::size_t>(f)] = seen;
+      std::size_t begin = 0;
+      for (int depth = 0; depth < 4; ++depth) {
+        const std::size_t end = s.expanded_faces.size();
+        for (std::size_t k = begin; k < end; ++k)
+          for (auto h : mesh.fh_range(FaceHandle(s.expanded_faces[k]))) {
+            if (!crossable(mesh, h)) continue;
+            const int g = mesh.face_handle(mesh.opposite_halfedge_handle(h)).idx();
+            if (g < 0 || s.face_stamp[static_cast<std::size_t>(g)] == seen) continue;
+            s.face_stamp[static_cast<std::size_t>(g)] = seen;
+            s.expanded_faces.push_back(g);
+          }
+        begin = end;
+      }
+      for (int f : s.expanded_faces)
+        for (auto vh : mesh.fv_range(FaceHandle(f))) set_rho(vh);
+      // face_stamp was reused for the expansion: mark the given faces again for the next flood.
+      const unsigned again = next_stamp(s.face_stamp, s.face_counter, nf);
+      for (FaceHandle g : *faces) s.face_stamp[static_cast<std::size_t>(g.idx())] = again;
+      region_cells(mesh, field, out, ws, s.expanded_faces, s.local, false, false, rho_u);
+      allowed = again;
+    }
+  }
+  for (auto vh : mesh.vertices()) {
+    const auto v = static_cast<std::size_t>(vh.idx());
+    out.moment[v] = out.shift[v] + out.mass[v] * point2(mesh, vh);
   }
 }
 
