@@ -39,4 +39,11 @@ inline Domain square_with_segment() {
   return d;
 }
 
+/// The unit square cut in two by an interior segment from side to side (two regions).
+inline Domain split_square() {
+  Domain d = polygon_domain({{0, 0}, {1, 0}, {1, 0.4}, {1, 1}, {0, 1}, {0, 0.4}}, "split_square");
+  d.segments.push_back({2, 5});
+  return d;
+}
+
 }  // namespace acute::test

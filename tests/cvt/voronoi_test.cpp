@@ -95,7 +95,7 @@ struct Case {
 
 std::vector<Case> tiling_cases() {
   std::vector<Case> out;
-  for (const Domain& d : {test::unit_square(), test::l_shape(), test::wedge_with_hole(), test::square_with_segment()}) {
+  for (const Domain& d : {test::unit_square(), test::l_shape(), test::wedge_with_hole(), test::square_with_segment(), test::split_square()}) {
     const Mesh cdt = build_cdt(d);
     const double area = measure_domain(cdt).area;
     out.push_back({d.name + " cdt", cdt, SizeField::uniform(1), area});
@@ -125,8 +125,8 @@ TEST(Cells, tile_the_domain_also_on_obtuse_and_non_delaunay_meshes) {
   EXPECT_GT(obtuse, 100u);  // the cases do exercise obtuse triangles
 }
 
-/// Brute force: the nearest vertex of every point of a fine grid, kept when the point lies in a
-/// mesh triangle (located by a scan: small meshes only).
+/// Brute force: every point of a fine grid goes to the nearest vertex of its region (the
+/// triangles connected through unconstrained edges; found by a scan: small meshes only).
 struct BruteForce {
   std::vector<double> area;
   std::vector<Point2> moment;
@@ -134,40 +134,65 @@ struct BruteForce {
 
 BruteForce brute_force(const Mesh& mesh, int n) {
   BruteForce b{std::vector<double>(mesh.n_vertices(), 0.0), std::vector<Point2>(mesh.n_vertices(), Point2(0, 0))};
-  Point2 lo(1e300, 1e300), hi(-1e300, -1e300);
-  std::vector<Point2> v;
-  for (auto vh : mesh.vertices()) {
-    v.push_back(point2(mesh, vh));
-    lo = lo.cwiseMin(v.back());
-    hi = hi.cwiseMax(v.back());
+  std::vector<int> region(mesh.n_faces(), -1);
+  int regions = 0;
+  for (auto f0 : mesh.faces()) {
+    if (region[static_cast<std::size_t>(f0.idx())] >= 0) continue;
+    std::vector<FaceHandle> stack{f0};
+    region[static_cast<std::size_t>(f0.idx())] = regions;
+    while (!stack.empty()) {
+      const FaceHandle f = stack.back();
+      stack.pop_back();
+      for (auto h : mesh.fh_range(f)) {
+        const auto g = mesh.face_handle(mesh.opposite_halfedge_handle(h));
+        if (!g.is_valid() || is_constrained(mesh, mesh.edge_handle(h)) || region[static_cast<std::size_t>(g.idx())] >= 0) continue;
+        region[static_cast<std::size_t>(g.idx())] = regions;
+        stack.push_back(g);
+      }
+    }
+    ++regions;
   }
-  std::vector<std::array<Point2, 3>> tris;
-  for (auto fh : mesh.faces()) tris.push_back(face_points(mesh, fh));
+  std::vector<std::vector<VertexHandle>> sites(static_cast<std::size_t>(regions));
+  for (int r = 0; r < regions; ++r) {
+    std::vector<char> in(mesh.n_vertices(), 0);
+    for (auto f : mesh.faces())
+      if (region[static_cast<std::size_t>(f.idx())] == r)
+        for (auto vh : mesh.fv_range(f))
+          if (!in[static_cast<std::size_t>(vh.idx())]) in[static_cast<std::size_t>(vh.idx())] = 1, sites[static_cast<std::size_t>(r)].push_back(vh);
+  }
+  Point2 lo(1e300, 1e300), hi(-1e300, -1e300);
+  for (auto vh : mesh.vertices()) {
+    lo = lo.cwiseMin(point2(mesh, vh));
+    hi = hi.cwiseMax(point2(mesh, vh));
+  }
+  std::vector<std::pair<std::array<Point2, 3>, int>> tris;
+  for (auto fh : mesh.faces()) tris.emplace_back(face_points(mesh, fh), region[static_cast<std::size_t>(fh.idx())]);
   const Point2 step = (hi - lo) / n;
   const double cell = step.x() * step.y();
   for (int iy = 0; iy < n; ++iy)
     for (int ix = 0; ix < n; ++ix) {
       const Point2 x = lo + Point2((ix + 0.5) * step.x(), (iy + 0.5) * step.y());
-      bool in = false;
-      for (const auto& t : tris)
+      int r = -1;
+      for (const auto& [t, tr] : tris)
         if (signed_area2(t[0], t[1], x) >= 0 && signed_area2(t[1], t[2], x) >= 0 && signed_area2(t[2], t[0], x) >= 0) {
-          in = true;
+          r = tr;
           break;
         }
-      if (!in) continue;
-      std::size_t best = 0;
-      for (std::size_t k = 1; k < v.size(); ++k)
-        if ((x - v[k]).squaredNorm() < (x - v[best]).squaredNorm()) best = k;
-      b.area[best] += cell;
-      b.moment[best] += cell * x;
+      if (r < 0) continue;
+      const auto& cand = sites[static_cast<std::size_t>(r)];
+      VertexHandle best = cand[0];
+      for (VertexHandle w : cand)
+        if ((x - point2(mesh, w)).squaredNorm() < (x - point2(mesh, best)).squaredNorm()) best = w;
+      b.area[static_cast<std::size_t>(best.idx())] += cell;
+      b.moment[static_cast<std::size_t>(best.idx())] += cell * x;
     }
   return b;
 }
 
 TEST(Cells, match_a_brute_force_nearest_vertex_integration) {
   // Small unoptimised starts (obtuse triangles) on the L-shape (reflex corner), the domain with a
-  // hole and the one with an interior segment.
-  for (const Domain& d : {test::l_shape(), test::wedge_with_hole(), test::square_with_segment()}) {
+  // hole, one with a dangling interior segment (one region) and one cut in two by a segment.
+  for (const Domain& d : {test::l_shape(), test::wedge_with_hole(), test::square_with_segment(), test::split_square()}) {
     const Mesh cdt = build_cdt(d);
     const SizeField f = SizeField::uniform(size_for_vertex_count(measure_domain(cdt), 60));
     const Mesh mesh = sample_domain(d, cdt, f, {});
