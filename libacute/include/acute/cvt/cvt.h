@@ -1,6 +1,10 @@
 // Layer: cvt. Centroidal Voronoi tessellation meshing: size field, sampling, CDT, then Lloyd and
-// L-BFGS (LBFGS++ two-loop recursion) on the CVT energy with the constrained Delaunay property
-// restored after every step.
+// L-BFGS on the CVT energy of the clipped Voronoi cells (voronoi.h) with the constrained Delaunay
+// property restored after every step. L-BFGS keeps its correction pairs in LBFGS++'s BFGSMat but
+// runs its own loop: a requested step cannot always be realised (a move that would invert a
+// triangle or leave its segment is shortened), so the pair must use the step actually taken,
+// which LBFGSSolver / LBFGSBSolver (whose line searches evaluate exactly the point they ask for)
+// cannot do.
 #pragma once
 
 #include <acute/core/domain.h>

@@ -2,20 +2,29 @@
 // diagram), with the integrals the CVT energy needs (mass, first moment, energy) under the
 // density rho = 1/h^4.
 //
-// What is computed: for every vertex v, the set of points of the domain (the union of the mesh
-// triangles) nearer to v than to any other vertex, Euclidean distance, no visibility: cells are
-// cut by the domain boundary only. Interior constrained segments do not cut cells (the domain
-// continues across them; vertices on them slide, so their cells straddle them).
+// What is computed: the domain (the union of the mesh triangles) is split into regions by the
+// constrained edges (triangles connected through unconstrained edges form a region). Within a
+// region, the cell of a vertex of the region is the set of points of the region nearer to it than
+// to any other vertex of the region (Euclidean distance). So cells are cut by the domain boundary
+// and by interior segments that separate regions; a vertex on such a segment has a cell on each
+// side. A dangling interior segment (the same region on both sides) does not cut cells; the
+// optimiser instead keeps vertices from creeping onto it (see cvt_optimize).
+// Why cut by constraints: mesh vertices cannot cross a constrained edge, so a cell reaching across
+// one would pull its vertex against the segment (flat triangles), and the CDT is not Delaunay
+// there anyway; with the cut every cell's centroid is on its vertex's side.
 //
-// How: the unconstrained Delaunay triangulation of the vertices (kept across calls in the
-// workspace, repaired by flips) gives every cell its bounding bisectors. Every mesh triangle T
-// is then split among the cells that meet it: starting from T's corners, a cell's piece is T
-// clipped by the half-planes of the vertex's Delaunay neighbours (Sutherland-Hodgman), and the
+// How: per region, the unconstrained Delaunay triangulation of its vertices (kept across calls in
+// the workspace, repaired by flips) gives every cell its bounding bisectors. Every triangle T of
+// the region is split among the cells that meet it: starting from T's corners, a cell's piece is
+// T clipped by the half-planes of the vertex's Delaunay neighbours (Sutherland-Hodgman), and the
 // neighbours whose bisector bounds the piece are visited next (the cells meeting a convex T are
-// connected through shared edges). So the pieces tile T up to rounding whatever T's shape
-// (obtuse, non-Delaunay next to a constraint) and a cell may be cut in several components (across
-// a hole). Integrals: pieces are fanned into triangles, rho is evaluated at the piece corners
-// and interpolated linearly (exact for a uniform field), the polynomial integrals are exact.
+// connected through shared edges). So the pieces tile T up to rounding whatever T's shape (obtuse,
+// not Delaunay), and a cell may have several components (across a hole). Shortcut: a cell whose
+// Voronoi polygon lies in the disk inscribed in its vertex's star (no constrained edge at the
+// vertex) is inside the domain and integrated whole; a triangle whose corners and their Delaunay
+// neighbours all have such cells holds no other piece and is skipped.
+// Integrals: pieces are fanned into triangles, rho is evaluated at the piece corners and
+// interpolated linearly (exact for a uniform field), the polynomial integrals are exact.
 // Degenerate input (cocircular or collinear vertices) only produces zero-length edges or
 // zero-area pieces: the clipping divides only by a difference of strictly opposite signs.
 #pragma once
@@ -65,8 +74,8 @@ struct CellWorkspace {
 
 /// Cells of every vertex (faces = nullptr), or only their pieces within the given faces (then the
 /// integrals of vertices outside them are partial; vectors are still sized to n_vertices and
-/// zeroed). With faces, the cells are those of the vertices within two rings of the faces (the
-/// others are assumed not to reach them), so the cost is local.
+/// zeroed). With faces, the sites are the vertices of the faces up to four face steps away within
+/// the region (others are assumed not to reach the faces), so the cost is local.
 void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out, CellWorkspace& workspace,
                    const std::vector<FaceHandle>* faces = nullptr);
 
