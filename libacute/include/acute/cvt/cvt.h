@@ -63,7 +63,8 @@ struct CvtOptimizeResult {
 /// OnSegment vertices) for the CVT energy: Free vertices in 2D, OnSegment vertices along their
 /// segment, Input vertices fixed. After every step the moves are applied with can_relocate/relocate
 /// (a move that would invert a triangle is halved up to 8 times, then dropped) and the constrained
-/// Delaunay property restored by flips. Deterministic. The mesh keeps its vertex set; faces and
+/// Delaunay property restored by flips. A move may not bring a vertex closer to a constrained edge
+/// of its link than min(its current distance, h/4) (else it is halved too). Deterministic. The mesh keeps its vertex set; faces and
 /// edges may be flipped (no garbage collection).
 CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOptimizeParams& params = {});
 
