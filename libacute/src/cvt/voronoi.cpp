@@ -268,6 +268,15 @@ void region_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out, 
       st = vs;
       s.site_vertex.push_back(vh.idx());
     }
+  // In vertex order, so that the same region gives the same list after flips (and its Delaunay
+  // triangulation is repaired, not rebuilt).
+  if (s.site_vertex.size() * 4 > mesh.n_vertices()) {
+    s.site_vertex.clear();
+    for (std::size_t v = 0; v < mesh.n_vertices(); ++v)
+      if (s.vertex_stamp[v] == vs) s.site_vertex.push_back(static_cast<int>(v));
+  } else {
+    std::sort(s.site_vertex.begin(), s.site_vertex.end());
+  }
   const std::size_t ns = s.site_vertex.size();
   if (ns < 3) return;
   s.points.resize(ns);
