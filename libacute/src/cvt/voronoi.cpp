@@ -5,6 +5,7 @@
 #include <acute/mesh/geometry.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <limits>
 
@@ -18,7 +19,9 @@ struct RegionDelaunay {
 };
 
 struct CellScratch {
-  std::vector<RegionDelaunay> regions;  ///< full mode, in discovery order
+  /// Full mode, keyed by the region's first and last site (vertex idx): stable under flips, which
+  /// renumber faces and so the order regions are found in.
+  std::map<std::pair<int, int>, RegionDelaunay> regions;
   RegionDelaunay local;                 ///< local mode (rebuilt every call)
   SiteDelaunay* delaunay = nullptr;     ///< the current region's
   std::size_t rebuilds = 0, flips = 0;  ///< over every region so far
@@ -257,7 +260,8 @@ unsigned next_stamp(std::vector<unsigned>& stamps, unsigned& counter, std::size_
 
 /// Cells of one region: sites = the vertices of `site_faces`, pieces over s.region_faces.
 void region_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out, CellWorkspace& ws, const std::vector<int>& site_faces,
-                  RegionDelaunay& rd, bool persistent, bool whole_cells, double rho_u) {
+                  bool persistent, double rho_u) {
+  const bool whole_cells = persistent;
   CellScratch& s = *ws.scratch;
   const unsigned vs = next_stamp(s.vertex_stamp, s.vertex_counter, mesh.n_vertices());
   s.site_vertex.clear();
@@ -287,6 +291,7 @@ void region_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out, 
     s.site_rho[i] = ws.vertex_rho[v];
     s.vertex_site[v] = static_cast<int>(i);
   }
+  RegionDelaunay& rd = persistent ? s.regions[{s.site_vertex.front(), s.site_vertex.back()}] : s.local;
   const std::size_t r0 = rd.delaunay.rebuilds(), f0 = rd.delaunay.flips();
   rd.delaunay.update(s.points, persistent && s.site_vertex == rd.previous_sites);
   s.rebuilds += rd.delaunay.rebuilds() - r0;
@@ -401,8 +406,7 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
     for (auto fh : mesh.faces()) {
       if (mesh.status(fh).deleted() || s.face_region[static_cast<std::size_t>(fh.idx())] != -1) continue;
       flood_region(mesh, fh.idx(), region, s, 0);
-      if (s.regions.size() <= static_cast<std::size_t>(region)) s.regions.emplace_back();
-      region_cells(mesh, field, out, ws, s.region_faces, s.regions[static_cast<std::size_t>(region)], true, true, rho_u);
+      region_cells(mesh, field, out, ws, s.region_faces, true, rho_u);
       ++region;
     }
   } else {
@@ -437,7 +441,7 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
       // face_stamp was reused for the expansion: mark the given faces again for the next flood.
       const unsigned again = next_stamp(s.face_stamp, s.face_counter, nf);
       for (FaceHandle g : *faces) s.face_stamp[static_cast<std::size_t>(g.idx())] = again;
-      region_cells(mesh, field, out, ws, s.expanded_faces, s.local, false, false, rho_u);
+      region_cells(mesh, field, out, ws, s.expanded_faces, false, rho_u);
       allowed = again;
     }
   }
