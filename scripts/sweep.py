@@ -31,9 +31,9 @@ def run_one(args, domain):
     row = dict(domain=name, rc=rc, secs=secs, err=err[0] if err else "")
     if rc not in (0, 1) or not os.path.exists(out):
         return row
-    mc = [sys.executable, MESHCHECK, out, "--domain", domain, "--tolerance", "1e-10", "--json",
+    mc = [sys.executable, args.meshcheck, out, "--domain", domain, "--tolerance", "1e-10", "--json",
           "--min-angle", str(args.min_angle), "--max-angle", str(args.max_angle)]
-    if name == "box": mc = [sys.executable, MESHCHECK, out, "--tolerance", "1e-10", "--json",
+    if name == "box": mc = [sys.executable, args.meshcheck, out, "--tolerance", "1e-10", "--json",
                             "--min-angle", str(args.min_angle), "--max-angle", str(args.max_angle)]
     p = subprocess.run(mc, capture_output=True, text=True)
     try:
@@ -63,6 +63,7 @@ def main():
     ap.add_argument("--timeout", type=float, default=600)
     ap.add_argument("--out", default="/tmp/acute-sweep")
     ap.add_argument("--extra", default="", help="more arguments for acute mesh, e.g. '--time-limit 60'")
+    ap.add_argument("--meshcheck", default=MESHCHECK, help="the referee (default: ../shared/tools/meshcheck)")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     with ThreadPoolExecutor(args.jobs) as ex:

@@ -30,4 +30,20 @@ inline Domain wedge_with_hole() {
   return d;
 }
 
+/// The unit square with a slanted interior segment (the domain continues across it).
+inline Domain square_with_segment() {
+  Domain d = unit_square();
+  d.name = "square_with_segment";
+  d.points.insert(d.points.end(), {{0.2, 0.3}, {0.7, 0.8}});
+  d.segments.push_back({4, 5});
+  return d;
+}
+
+/// The unit square cut in two by an interior segment from side to side (two regions).
+inline Domain split_square() {
+  Domain d = polygon_domain({{0, 0}, {1, 0}, {1, 0.4}, {1, 1}, {0, 1}, {0, 0.4}}, "split_square");
+  d.segments.push_back({2, 5});
+  return d;
+}
+
 }  // namespace acute::test

@@ -78,19 +78,18 @@ class Optimizer {
     double sum2 = 0;
     for (const auto& m : movers_) {
       const auto i = static_cast<std::size_t>(m.vh.idx());
-      const Point2 v = point2(mesh_, m.vh);
       const double mass = cells_.mass[i];
-      const Point2 g = 2.0 * (mass * v - cells_.moment[i]);  // 2 m (v - c)
+      const Point2 g = -2.0 * cells_.shift[i];  // dF/dv = 2 m (v - c) (the cell boundary terms cancel)
       const double h = std::pow(ws_.vertex_rho[i], -0.25);
       if (m.segment >= 0) {
         grad_[m.offset] = g.dot(m.dir);
-        const double r = std::abs(grad_[m.offset]) / (2.0 * mass * h);
+        const double r = (mass > 0 ? std::abs(grad_[m.offset]) / (2.0 * mass * h) : 0.0);
         max_move_ = std::max(max_move_, r);
         sum2 += r * r;
       } else {
         grad_[m.offset] = g.x();
         grad_[m.offset + 1] = g.y();
-        const double r = g.norm() / (2.0 * mass * h);
+        const double r = (mass > 0 ? g.norm() / (2.0 * mass * h) : 0.0);
         max_move_ = std::max(max_move_, r);
         sum2 += r * r;
       }
@@ -115,7 +114,9 @@ class Optimizer {
   void lloyd_targets(Eigen::VectorXd& x) const {
     x.resize(num_vars_);
     for (const auto& m : movers_) {
-      const Point2 c = cells_.centroid(m.vh.idx());
+      const auto i = static_cast<std::size_t>(m.vh.idx());
+      const double mass = cells_.mass[i];
+      const Point2 c = point2(mesh_, m.vh) + (mass > 0 ? Point2(cells_.shift[i] / mass) : Point2(0, 0));
       if (m.segment >= 0) {
         x[m.offset] = (c - m.origin).dot(m.dir);
       } else {
@@ -147,8 +148,9 @@ class Optimizer {
       if (m.segment >= 0) target = project_on_segment(mesh_, m.segment, target);
       if (target == v) continue;
       bool moved = false;
+      const double h = std::pow(ws_.vertex_rho[static_cast<std::size_t>(m.vh.idx())], -0.25);
       for (int k = 0; k <= 8; ++k) {
-        if (can_relocate(mesh_, m.vh, target) == OpVerdict::Ok) {
+        if (keeps_clear_of_constraints(m.vh, v, target, h) && can_relocate(mesh_, m.vh, target) == OpVerdict::Ok) {
           relocate(mesh_, m.vh, target);
           moved = true;
           if (k > 0) ++blocked_;
@@ -168,6 +170,27 @@ class Optimizer {
     }
     moved_.clear();
     flips_ = restore_delaunay(mesh_, queue_);
+  }
+
+  /// A vertex whose centroid lies across a constrained edge of its link (an interior segment with
+  /// the same region on both sides, whose cells are not cut by it) would creep onto that edge by
+  /// ever shorter moves and leave a flat triangle: a move may not bring it closer to such an edge
+  /// than a quarter of its size (or than it already is).
+  bool keeps_clear_of_constraints(VertexHandle vh, const Point2& from, const Point2& to, double h) const {
+    for (auto he : mesh_.voh_range(vh)) {
+      if (!mesh_.face_handle(he).is_valid()) continue;
+      const auto opposite = mesh_.next_halfedge_handle(he);
+      if (!is_constrained(mesh_, mesh_.edge_handle(opposite))) continue;
+      const Point2 a = point2(mesh_, mesh_.from_vertex_handle(opposite)), b = point2(mesh_, mesh_.to_vertex_handle(opposite));
+      auto distance = [&](const Point2& p) {
+        const Point2 ab = b - a;
+        const double l2 = ab.squaredNorm();
+        const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+        return (a + t * ab - p).norm();
+      };
+      if (distance(to) < std::min(distance(from), 0.25 * h)) return false;
+    }
+    return true;
   }
 
   double energy() const { return energy_; }

@@ -1,6 +1,10 @@
 // Layer: cvt. Centroidal Voronoi tessellation meshing: size field, sampling, CDT, then Lloyd and
-// L-BFGS (LBFGS++ two-loop recursion) on the CVT energy with the constrained Delaunay property
-// restored after every step.
+// L-BFGS on the CVT energy of the clipped Voronoi cells (voronoi.h) with the constrained Delaunay
+// property restored after every step. L-BFGS keeps its correction pairs in LBFGS++'s BFGSMat but
+// runs its own loop: a requested step cannot always be realised (a move that would invert a
+// triangle or leave its segment is shortened), so the pair must use the step actually taken,
+// which LBFGSSolver / LBFGSBSolver (whose line searches evaluate exactly the point they ask for)
+// cannot do.
 #pragma once
 
 #include <acute/core/domain.h>
@@ -59,7 +63,8 @@ struct CvtOptimizeResult {
 /// OnSegment vertices) for the CVT energy: Free vertices in 2D, OnSegment vertices along their
 /// segment, Input vertices fixed. After every step the moves are applied with can_relocate/relocate
 /// (a move that would invert a triangle is halved up to 8 times, then dropped) and the constrained
-/// Delaunay property restored by flips. Deterministic. The mesh keeps its vertex set; faces and
+/// Delaunay property restored by flips. A move may not bring a vertex closer to a constrained edge
+/// of its link than min(its current distance, h/4) (else it is halved too). Deterministic. The mesh keeps its vertex set; faces and
 /// edges may be flipped (no garbage collection).
 CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOptimizeParams& params = {});
 

@@ -1,0 +1,141 @@
+#include "cvt/site_delaunay.h"
+
+#include <acute/core/errors.h>
+#include <acute/delaunay/cdt.h>
+#include <acute/predicates/predicates.h>
+
+namespace acute::detail {
+
+void SiteDelaunay::update(const std::vector<Point2>& points, bool same_sites) {
+  const bool repairable = same_sites && points.size() == points_.size() && !tri_.empty();
+  points_ = points;
+  if (repairable && all_counter_clockwise()) {
+    lawson();
+  } else {
+    rebuild();
+  }
+  build_adjacency();
+}
+
+bool SiteDelaunay::all_counter_clockwise() const {
+  for (const auto& t : tri_)
+    if (predicates::orient2d(points_[static_cast<std::size_t>(t[0])], points_[static_cast<std::size_t>(t[1])],
+                             points_[static_cast<std::size_t>(t[2])]) != Sign::Positive)
+      return false;
+  return true;
+}
+
+void SiteDelaunay::rebuild() {
+  ++rebuilds_;
+  tri_ = delaunay_triangles(points_);
+  const std::size_t n = points_.size();
+  // Triangles around each vertex (CSR), then each edge's twin among the triangles of its head.
+  incident_start_.assign(n + 1, 0);
+  for (const auto& t : tri_)
+    for (int v : t) ++incident_start_[static_cast<std::size_t>(v) + 1];
+  for (std::size_t i = 0; i < n; ++i) incident_start_[i + 1] += incident_start_[i];
+  incident_.resize(3 * tri_.size());
+  {
+    std::vector<int>& fill = start_;  // reused as a cursor; rebuilt by build_adjacency
+    fill.assign(incident_start_.begin(), incident_start_.end() - 1);
+    for (std::size_t t = 0; t < tri_.size(); ++t)
+      for (int v : tri_[t]) incident_[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<int>(t);
+  }
+  nbr_.assign(tri_.size(), {-1, -1, -1});
+  for (std::size_t t = 0; t < tri_.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const int a = tri_[t][static_cast<std::size_t>((i + 1) % 3)], b = tri_[t][static_cast<std::size_t>((i + 2) % 3)];
+      // The twin holds b -> a.
+      for (int k = incident_start_[static_cast<std::size_t>(b)]; k < incident_start_[static_cast<std::size_t>(b) + 1]; ++k) {
+        const int u = incident_[static_cast<std::size_t>(k)];
+        const auto& tu = tri_[static_cast<std::size_t>(u)];
+        int j = 0;
+        while (tu[static_cast<std::size_t>(j)] != b) ++j;
+        if (tu[static_cast<std::size_t>((j + 1) % 3)] == a) {
+          nbr_[t][static_cast<std::size_t>(i)] = u;
+          break;
+        }
+      }
+    }
+}
+
+void SiteDelaunay::lawson() {
+  stack_.clear();
+  for (std::size_t t = 0; t < tri_.size(); ++t)
+    for (int i = 0; i < 3; ++i)
+      if (nbr_[t][static_cast<std::size_t>(i)] > static_cast<int>(t)) stack_.emplace_back(static_cast<int>(t), i);
+  while (!stack_.empty()) {
+    const auto [t, i] = stack_.back();
+    stack_.pop_back();
+    const int u = nbr_[static_cast<std::size_t>(t)][static_cast<std::size_t>(i)];
+    if (u < 0) continue;
+    const auto& tt = tri_[static_cast<std::size_t>(t)];
+    const int c = tt[static_cast<std::size_t>(i)], a = tt[static_cast<std::size_t>((i + 1) % 3)], b = tt[static_cast<std::size_t>((i + 2) % 3)];
+    const auto& tu = tri_[static_cast<std::size_t>(u)];
+    int j = 0;
+    while (tu[static_cast<std::size_t>(j)] == a || tu[static_cast<std::size_t>(j)] == b) ++j;
+    const int d = tu[static_cast<std::size_t>(j)];
+    // A valid triangulation's non-locally-Delaunay edge has a strictly convex quadrilateral, so
+    // the flip keeps every triangle counter-clockwise.
+    if (predicates::incircle(points_[static_cast<std::size_t>(c)], points_[static_cast<std::size_t>(a)],
+                             points_[static_cast<std::size_t>(b)], points_[static_cast<std::size_t>(d)]) == Sign::Positive)
+      flip(t, i);
+  }
+}
+
+void SiteDelaunay::flip(int t, int i) {
+  // t = (c, a, b) with edge ab opposite c shared with u = (d, b, a). After: t = (c, a, d), u = (d, b, c).
+  const auto ts = static_cast<std::size_t>(t);
+  const int u = nbr_[ts][static_cast<std::size_t>(i)];
+  const auto us = static_cast<std::size_t>(u);
+  const int c = tri_[ts][static_cast<std::size_t>(i)], a = tri_[ts][static_cast<std::size_t>((i + 1) % 3)],
+            b = tri_[ts][static_cast<std::size_t>((i + 2) % 3)];
+  const int t_bc = nbr_[ts][static_cast<std::size_t>((i + 1) % 3)], t_ca = nbr_[ts][static_cast<std::size_t>((i + 2) % 3)];
+  int j = 0;
+  while (tri_[us][static_cast<std::size_t>(j)] == a || tri_[us][static_cast<std::size_t>(j)] == b) ++j;
+  const int d = tri_[us][static_cast<std::size_t>(j)];
+  // In u = (d, b, a) from corner j: the edge opposite b is ad, the one opposite a is db.
+  const int u_ad = nbr_[us][static_cast<std::size_t>((j + 1) % 3)], u_db = nbr_[us][static_cast<std::size_t>((j + 2) % 3)];
+  tri_[ts] = {c, a, d};
+  nbr_[ts] = {u_ad, u, t_ca};
+  tri_[us] = {d, b, c};
+  nbr_[us] = {t_bc, t, u_db};
+  auto repoint = [&](int x, int from, int to) {
+    if (x < 0) return;
+    for (int& y : nbr_[static_cast<std::size_t>(x)])
+      if (y == from) y = to;
+  };
+  repoint(t_bc, t, u);
+  repoint(u_ad, u, t);
+  ++flips_;
+  stack_.emplace_back(t, 0);
+  stack_.emplace_back(t, 2);
+  stack_.emplace_back(u, 0);
+  stack_.emplace_back(u, 2);
+}
+
+void SiteDelaunay::build_adjacency() {
+  const std::size_t n = points_.size();
+  start_.assign(n + 1, 0);
+  // Every directed edge a -> b of a triangle gives b to a; a hull edge also gives a to b (its twin
+  // is missing).
+  for (std::size_t t = 0; t < tri_.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      ++start_[static_cast<std::size_t>(tri_[t][static_cast<std::size_t>((i + 1) % 3)]) + 1];
+      if (nbr_[t][static_cast<std::size_t>(i)] < 0) ++start_[static_cast<std::size_t>(tri_[t][static_cast<std::size_t>((i + 2) % 3)]) + 1];
+    }
+  for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
+  adjacent_.resize(static_cast<std::size_t>(start_[n]));
+  vertex_tri_.assign(n, -1);
+  for (std::size_t t = 0; t < tri_.size(); ++t)
+    for (int v : tri_[t]) vertex_tri_[static_cast<std::size_t>(v)] = static_cast<int>(t);
+  incident_start_.assign(start_.begin(), start_.end() - 1);  // fill cursor
+  for (std::size_t t = 0; t < tri_.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const int a = tri_[t][static_cast<std::size_t>((i + 1) % 3)], b = tri_[t][static_cast<std::size_t>((i + 2) % 3)];
+      adjacent_[static_cast<std::size_t>(incident_start_[static_cast<std::size_t>(a)]++)] = b;
+      if (nbr_[t][static_cast<std::size_t>(i)] < 0) adjacent_[static_cast<std::size_t>(incident_start_[static_cast<std::size_t>(b)]++)] = a;
+    }
+}
+
+}  // namespace acute::detail

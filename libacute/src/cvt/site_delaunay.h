@@ -1,0 +1,58 @@
+// Layer: cvt (private). The unconstrained Delaunay triangulation of the CVT sites over their
+// convex hull, kept from one evaluation to the next. Its edges give every site the bisectors
+// that bound its Voronoi cell, whatever the mesh (a constrained Delaunay mesh is not Delaunay
+// next to a constraint, and it has no triangles in holes or concavities, so its edges alone
+// miss Voronoi neighbours across them).
+#pragma once
+
+#include <acute/core/types.h>
+
+#include <array>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace acute::detail {
+
+class SiteDelaunay {
+ public:
+  /// Makes this the Delaunay triangulation of `points`. When the previous triangulation was of
+  /// the same number of points (same identities: `same_sites`) and every triangle is still
+  /// counter-clockwise at the new positions, it is repaired by Lawson flips (exact incircle),
+  /// which is linear for small moves; otherwise it is rebuilt from scratch.
+  void update(const std::vector<Point2>& points, bool same_sites);
+
+  /// The Delaunay neighbours of site i (every site sharing an edge with it).
+  std::pair<const int*, const int*> neighbours(int i) const {
+    const auto b = static_cast<std::size_t>(start_[static_cast<std::size_t>(i)]);
+    const auto e = static_cast<std::size_t>(start_[static_cast<std::size_t>(i) + 1]);
+    return {adjacent_.data() + b, adjacent_.data() + e};
+  }
+
+  const std::vector<std::array<int, 3>>& triangles() const { return tri_; }
+  /// The triangle across the edge opposite corner i of t; -1 on the hull.
+  int across(int t, int i) const { return nbr_[static_cast<std::size_t>(t)][static_cast<std::size_t>(i)]; }
+  /// A triangle incident to site i (-1 if none).
+  int vertex_triangle(int i) const { return vertex_tri_[static_cast<std::size_t>(i)]; }
+
+  std::size_t rebuilds() const { return rebuilds_; }
+  std::size_t flips() const { return flips_; }
+
+ private:
+  void rebuild();
+  bool all_counter_clockwise() const;
+  void lawson();
+  void flip(int t, int i);
+  void build_adjacency();
+
+  std::vector<Point2> points_;
+  std::vector<std::array<int, 3>> tri_;  ///< counter-clockwise vertex ids
+  std::vector<std::array<int, 3>> nbr_;  ///< nbr_[t][i]: across the edge opposite corner i; -1 on the hull
+  std::vector<int> start_, adjacent_;    ///< CSR of the neighbours
+  std::vector<int> vertex_tri_;
+  std::vector<int> incident_start_, incident_;  ///< rebuild scratch: triangles around each vertex
+  std::vector<std::pair<int, int>> stack_;      ///< (triangle, edge) to check
+  std::size_t rebuilds_ = 0, flips_ = 0;
+};
+
+}  // namespace acute::detail
