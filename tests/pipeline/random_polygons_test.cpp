@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -31,9 +32,10 @@ namespace {
 constexpr unsigned kSeed = 20261201;
 constexpr int kDomains = 100;
 constexpr std::size_t kTargetVertices = 400;
-/// A safety net only (the repair's iteration caps end every run first on an unloaded machine);
+/// A safety net against a hang: the repair's own stopping rules (40 iterations without progress, the
+/// iteration cap) end the runs first, except on a heavily loaded machine (at 4 s, 2 of 100 were cut);
 /// meshes are judged on validity whatever stopped them.
-constexpr double kTimeLimitS = 4.0;
+constexpr double kTimeLimitS = 20.0;
 
 std::string case_name(int index) {
   char buf[32];
@@ -76,6 +78,7 @@ struct Outcome {
   MeshStatus status = MeshStatus::BoundsNotMet;
   std::size_t vertices = 0, remaining = 0;
   double max_angle = 0;
+  double seconds = 0;                ///< wall time of generate_mesh (printed, never asserted)
   bool narrow_input_corner = false;  ///< an input angle below 30 degrees (min bound exempt there)
   std::string cross_check;           ///< for Ok meshes: an angle the status should have excluded
 };
@@ -87,8 +90,10 @@ Outcome mesh_one(int index) {
   options.time_limit_s = kTimeLimitS;
   Outcome out;
   MeshResult result;
+  const auto t0 = std::chrono::steady_clock::now();
   try {
     result = generate_mesh(r.domain, options);
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   } catch (const std::exception& e) {
     out.problem = std::string("generate_mesh threw: ") + e.what();
     return out;
@@ -159,21 +164,23 @@ TEST(RandomPolygons, generator_gives_simple_domains_with_holes_and_the_degenerat
 
 TEST(RandomPolygons, every_mesh_is_valid_conforming_and_keeps_the_input_points) {
   int ok = 0, ok_without_narrow = 0, without_narrow = 0;
+  double total_s = 0;
   std::string misses;
   for (int i = 0; i < kDomains; ++i) {
     const Outcome o = mesh_one(i);
     EXPECT_EQ(o.problem, "") << describe(test::random_polygon_with_holes(kSeed, i));
     EXPECT_EQ(o.cross_check, "") << case_name(i) << ": status Ok but";
     ok += o.status == MeshStatus::Ok;
+    total_s += o.seconds;
     without_narrow += !o.narrow_input_corner;
     ok_without_narrow += o.status == MeshStatus::Ok && !o.narrow_input_corner;
     if (o.status != MeshStatus::Ok)
       misses += " " + case_name(i) + "(" + std::to_string(o.remaining) + " bad, max " + std::to_string(o.max_angle).substr(0, 6) +
-                (o.narrow_input_corner ? ", input angle < 30" : "") + ")";
+                (o.narrow_input_corner ? ", input angle < 30" : "") + ", " + std::to_string(o.seconds).substr(0, 4) + " s)";
   }
   // Not an assertion: the goal (all 100) is DISABLED_all_100_meet_30_90 below until it holds.
-  std::printf("random polygons: %d/%d meet [30, 90) (%d/%d of those without an input angle below 30 degrees)\nmisses:%s\n", ok,
-              kDomains, ok_without_narrow, without_narrow, misses.c_str());
+  std::printf("random polygons: %d/%d meet [30, 90) (%d/%d of those without an input angle below 30 degrees), %.1f s meshing\nmisses:%s\n",
+              ok, kDomains, ok_without_narrow, without_narrow, total_s, misses.c_str());
   ::testing::Test::RecordProperty("meet_30_90", ok);
 }
 
