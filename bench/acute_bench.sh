@@ -11,7 +11,7 @@
 #
 # Needs a Release build with the CGAL driver (apt-get install libcgal-dev time; then
 #   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release && cmake --build build -j2 --target acute_cli cgal_mesh2);
-# BUILD=dir picks another build folder. Results: results/bench/<date>/acute_bench_{quick,full}.md and .json
+# BUILD=dir picks another build folder, MESHCHECK=path the referee. Results: results/bench/<date>/acute_bench_{quick,full}.md and .json
 # (not committed).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,7 +26,10 @@ if [[ $mode == quick ]]; then
 else
   preset=(--sizes 5000,50000,500000 --reps 1 --timeout 900)
 fi
+# The referee: ../shared/tools/meshcheck beside the repository, else /work/shared (worktrees), or MESHCHECK=path.
+meshcheck=${MESHCHECK:-../shared/tools/meshcheck}
+[[ -f $meshcheck ]] || meshcheck=/work/shared/tools/meshcheck
 [[ -x /usr/bin/time ]] || echo "acute_bench: /usr/bin/time missing (apt-get install time): no cpu time or peak memory" >&2
 exec python3 bench/compare/run_compare.py "${preset[@]}" --name "acute_bench_$mode" --no-million \
-  --domains square,A,superior --meshers acute,cgal-max,cgal-max+lloyd --meshcheck-tolerance 1e-10 \
+  --domains square,A,superior --meshers acute,cgal-max,cgal-max+lloyd --meshcheck "$meshcheck" --meshcheck-tolerance 1e-10 \
   --acute "$build/bin/acute" --cgal "$build/bin/cgal_mesh2" --out "results/bench/$(date -u +%F)" "$@"

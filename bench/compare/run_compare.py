@@ -515,9 +515,9 @@ def markdown(report):
 
 def time_table(report):
     """Per domain and target: each mesher's time, memory and throughput beside the angles it reached."""
-    L = ["Triangles per second = triangles / wall time of the whole process. status: acute's own verdict "
+    L = ["Triangles per second = triangles / wall (cpu) time of the whole process, read and write included. status: acute's own verdict "
          "(ok = every angle in bounds except at input corners narrower than the min bound).", "",
-         "| domain | target V | mesher | status | T | wall s | cpu s | peak MB | M triangles/s | % obtuse | # right | max∠ | free min∠ |",
+         "| domain | target V | mesher | status | T | wall s | cpu s | peak MB | M triangles/s wall (cpu) | % obtuse | # right | max∠ | free min∠ |",
          "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for r in report["runs"]:
         if r.get("mesher") == "-":
@@ -528,10 +528,11 @@ def time_table(report):
         q = r.get("quality") or {}
         status = (r.get("extra") or {}).get("status") or "—" if r["mesher"] == "acute" else "—"
         tps = q["n_triangles"] / r["time_s"] / 1e6 if q.get("n_triangles") and r.get("time_s") else None
+        tps_cpu = q["n_triangles"] / r["cpu_s"] / 1e6 if q.get("n_triangles") and r.get("cpu_s") else None
         L.append("| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             r["domain"], r["target"], r["mesher"] + (" (%g°)" % r["angle_bound"] if r.get("angle_bound") and "max" in r["mesher"] else ""),
             status, fmt(q.get("n_triangles"), "%d"), fmt(r.get("time_s"), "%.2f"), fmt(r.get("cpu_s"), "%.2f"),
-            fmt(r.get("peak_mb"), "%.0f"), fmt(tps, "%.3f"), fmt(q.get("pct_obtuse")), fmt(q.get("n_right"), "%d"),
+            fmt(r.get("peak_mb"), "%.0f"), "%s (%s)" % (fmt(tps, "%.3f"), fmt(tps_cpu, "%.3f")), fmt(q.get("pct_obtuse")), fmt(q.get("n_right"), "%d"),
             fmt(q.get("max_angle"), "%.3f"), fmt(q.get("free_min_angle"))))
     return L
 
