@@ -66,7 +66,7 @@ std::vector<double> narrowest_input_angle(const Domain& d) {
   for (std::size_t i = 0; i < dirs.size(); ++i)
     for (std::size_t j = 0; j < dirs[i].size(); ++j)
       for (std::size_t k = j + 1; k < dirs[i].size(); ++k) {
-        double a = std::abs(dirs[i][j] - dirs[i][k]) * 180.0 / M_PI;
+        double a = std::abs(dirs[i][j] - dirs[i][k]) * 180.0 / test::detail::kPi;
         a = std::min(a, 360.0 - a);
         out[i] = std::min(out[i], a);
       }
@@ -114,7 +114,7 @@ Outcome mesh_one(int index) {
     for (auto vh : result.mesh.fv_range(fh)) p[k++] = point2(result.mesh, vh);
     for (int i = 0; i < 3; ++i) {
       const Point2 u = p[(i + 1) % 3] - p[i], v = p[(i + 2) % 3] - p[i];
-      const double deg = std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v)) * 180.0 / M_PI;
+      const double deg = std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v)) * 180.0 / test::detail::kPi;
       out.max_angle = std::max(out.max_angle, deg);
       if (result.status != MeshStatus::Ok || !out.cross_check.empty()) continue;
       // Ok must mean: every angle strictly acute (exact), and >= 30 degrees except at a narrow input corner.
