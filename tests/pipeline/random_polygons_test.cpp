@@ -5,7 +5,7 @@
 //
 // ACUTE_RANDOM_POLYGONS_DIR=DIR writes every domain (random_NNN.poly) and its mesh (random_NNN.off)
 // there, to reproduce a case with the CLI and judge it with meshcheck:
-//   acute mesh DIR/random_007.poly -o out.off --vertices 400
+//   acute mesh DIR/random_007.poly -o out.off --vertices 400 --time-limit 20
 //   python3 ../shared/tools/meshcheck out.off --domain DIR/random_007.poly --tolerance 1e-10
 #include <acute/io/io.h>
 #include <acute/mesher.h>
