@@ -9,7 +9,8 @@ import argparse, json, os, subprocess, sys, time
 from concurrent.futures import ThreadPoolExecutor
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-MESHCHECK = os.path.join(HERE, "..", "..", "shared", "tools", "meshcheck")
+# The referee beside the repository (../shared); MESHCHECK=path for a worktree elsewhere.
+MESHCHECK = os.environ.get("MESHCHECK") or os.path.join(HERE, "..", "..", "shared", "tools", "meshcheck")
 
 
 def run_one(args, domain):

@@ -439,7 +439,7 @@ class Runner:
 
     def check(self, rec, poly):
         a = self.args
-        cmd = [sys.executable, a.meshcheck, rec["out"], "--domain", poly, "--json", "--tolerance", "1e-9"]
+        cmd = [sys.executable, a.meshcheck, rec["out"], "--domain", poly, "--json", "--tolerance", a.meshcheck_tolerance]
         p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         try:
             j = json.loads(p.stdout)
@@ -478,9 +478,9 @@ def markdown(report):
     L = ["# acute vs CGAL Mesh_2 vs gmsh — %s mode, %s" % (meta["mode"], meta["date"]), "",
          "Machine: %s; %s cores; Python %s; load average at start %s, at end %s." % (
              meta["cpu"], meta["cores"], meta["python"], meta["load_start"], meta["load_end"]),
-         "acute: `%s` (%s). CGAL %s (`%s`). gmsh %s (`%s`). Referee: `%s --tolerance 1e-9`." % (
+         "acute: `%s` (%s). CGAL %s (`%s`). gmsh %s (`%s`). Referee: `%s --tolerance %s`." % (
              meta["acute"], meta["acute_rev"], meta["cgal_version"], meta["cgal"], meta["gmsh_version"], meta["gmsh"],
-             meta["meshcheck"]),
+             meta["meshcheck"], meta.get("meshcheck_tolerance", "1e-9")),
          "Wall time of the whole process (read, mesh, write), median of %d (%d at >= 200k); cpu = user + sys; peak RSS "
          "from /usr/bin/time. All meshers single-threaded, run one at a time. Peers' size "
          "parameter tuned to the target vertex count (±%d%%). acute/peer = (acute s per vertex) / (peer s per vertex)." % (
@@ -493,6 +493,8 @@ def markdown(report):
     # Summary first.
     L += ["## Summary", ""]
     L += summary(report)
+    L += ["", "## Time to mesh", ""]
+    L += time_table(report)
     L += ["", "## Runs", "",
           "| domain | target | mesher | valid | V | T | min∠ | free min∠ | max∠ | % >90 | # =90 | % <30 | Q min | Q mean | wall s | cpu s | peak MB | acute/peer |",
           "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
@@ -509,6 +511,30 @@ def markdown(report):
             fmt(q.get("n_right"), "%d"), fmt(q.get("pct_below_min")), fmt(q.get("q_min"), "%.3f"), fmt(q.get("q_mean"), "%.3f"),
             fmt(r.get("time_s"), "%.3f"), fmt(r.get("cpu_s"), "%.2f"), fmt(r.get("peak_mb"), "%.0f"), fmt(r.get("ratio"), "%.2f")))
     return "\n".join(L) + "\n"
+
+
+def time_table(report):
+    """Per domain and target: each mesher's time, memory and throughput beside the angles it reached."""
+    L = ["Triangles per second = triangles / wall (cpu) time of the whole process, read and write included. status: acute's own verdict "
+         "(ok = every angle in bounds except at input corners narrower than the min bound).", "",
+         "| domain | target V | mesher | status | T | wall s | cpu s | peak MB | M triangles/s wall (cpu) | % obtuse | # right | max∠ | free min∠ |",
+         "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for r in report["runs"]:
+        if r.get("mesher") == "-":
+            continue
+        if "error" in r:
+            L.append("| %s | %d | %s | %s |%s" % (r["domain"], r["target"], r["mesher"], r["error"].replace("|", "/"), " |" * 9))
+            continue
+        q = r.get("quality") or {}
+        status = (r.get("extra") or {}).get("status") or "—" if r["mesher"] == "acute" else "—"
+        tps = q["n_triangles"] / r["time_s"] / 1e6 if q.get("n_triangles") and r.get("time_s") else None
+        tps_cpu = q["n_triangles"] / r["cpu_s"] / 1e6 if q.get("n_triangles") and r.get("cpu_s") else None
+        L.append("| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            r["domain"], r["target"], r["mesher"] + (" (%g°)" % r["angle_bound"] if r.get("angle_bound") and "max" in r["mesher"] else ""),
+            status, fmt(q.get("n_triangles"), "%d"), fmt(r.get("time_s"), "%.2f"), fmt(r.get("cpu_s"), "%.2f"),
+            fmt(r.get("peak_mb"), "%.0f"), "%s (%s)" % (fmt(tps, "%.3f"), fmt(tps_cpu, "%.3f")), fmt(q.get("pct_obtuse")), fmt(q.get("n_right"), "%d"),
+            fmt(q.get("max_angle"), "%.3f"), fmt(q.get("free_min_angle"))))
+    return L
 
 
 def geomean(xs):
@@ -600,6 +626,7 @@ def main():
     ap.add_argument("--cgal", help="cgal_mesh2 driver (default build*/bin/cgal_mesh2)")
     ap.add_argument("--gmsh", help="gmsh binary (default from PATH)")
     ap.add_argument("--meshcheck", default=os.path.join(REPO, "..", "shared", "tools", "meshcheck"))
+    ap.add_argument("--meshcheck-tolerance", default="1e-9", help="meshcheck --tolerance (default 1e-9)")
     ap.add_argument("--cgal-max-angles", default="30,28,26,24,22")
     ap.add_argument("--timeout", type=float, help="seconds per mesher run (default 120 quick, 900 full)")
     ap.add_argument("--tolerance-count", type=float, default=0.10, help="accepted relative miss of the vertex count")
@@ -671,7 +698,7 @@ def main():
             "acute_rev": acute_rev, "cgal": a.cgal, "cgal_version": cgal_version(), "gmsh": a.gmsh,
             "gmsh_version": tool_version([a.gmsh, "--version"]) if a.gmsh else None, "meshcheck": a.meshcheck,
             "reps": a.reps, "big_reps": a.big_reps, "sizes": sizes, "million_on_square": million, "meshers": meshers,
-            "tolerance_count": a.tolerance_count, "cgal_max_angles": a.cgal_max_angles, "skipped": skipped,
+            "tolerance_count": a.tolerance_count, "meshcheck_tolerance": a.meshcheck_tolerance, "cgal_max_angles": a.cgal_max_angles, "skipped": skipped,
             "lloyd_iterations": LLOYD_ITERATIONS, "gmsh_smoothing": GMSH_SMOOTHING}
     report = {"meta": meta, "runs": []}
     runner = Runner(a, work)
