@@ -7,6 +7,7 @@
 #include <acute/delaunay/cdt.h>
 #include <acute/mesh/check.h>
 #include <acute/mesh/mesh.h>
+#include <acute/mesh/segments.h>
 #include <acute/predicates/predicates.h>
 
 #include <unistd.h>
@@ -239,9 +240,17 @@ inline std::string verify_cdt(const Mesh& mesh, const Domain& domain, const CdtC
         return "edge " + str(u) + "-" + str(v) + ": mesh boundary but not constrained";
       continue;
     }
-    if (static_cast<std::size_t>(s) >= domain.segments.size()) return "edge " + str(u) + "-" + str(v) + ": segment id out of range";
-    const Point2 a = domain.points[static_cast<std::size_t>(domain.segments[static_cast<std::size_t>(s)][0])];
-    const Point2 b = domain.points[static_cast<std::size_t>(domain.segments[static_cast<std::size_t>(s)][1])];
+    Point2 a, b;
+    if (static_cast<std::size_t>(s) < domain.segments.size()) {
+      a = domain.points[static_cast<std::size_t>(domain.segments[static_cast<std::size_t>(s)][0])];
+      b = domain.points[static_cast<std::size_t>(domain.segments[static_cast<std::size_t>(s)][1])];
+    } else if (opt.convex_hull && static_cast<std::size_t>(s) < acute::segment_table(mesh).size() && mesh.is_boundary(eh)) {
+      // The mesher gives the hull edges of a -c domain their own segment ids (the segment table).
+      a = acute::segment_table(mesh)[static_cast<std::size_t>(s)][0];
+      b = acute::segment_table(mesh)[static_cast<std::size_t>(s)][1];
+    } else {
+      return "edge " + str(u) + "-" + str(v) + ": segment id out of range";
+    }
     if (!on_segment(mesh, mesh.from_vertex_handle(h), a, b) || !on_segment(mesh, mesh.to_vertex_handle(h), a, b))
       return "edge " + str(u) + "-" + str(v) + ": labelled segment " + std::to_string(s) + " but not on it";
   }
