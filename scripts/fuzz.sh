@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (clang, ASan+UBSan) in ./build-fuzz and runs one for a given time.
 # Usage: scripts/fuzz.sh TARGET SECONDS [libFuzzer args...]
-#   TARGET: fuzz_poly | fuzz_cgshop | fuzz_mesh_reader | fuzz_cdt | build (only build all)
+#   TARGET: fuzz_poly | fuzz_cgshop | fuzz_mesh_reader | fuzz_cdt | fuzz_mesher | build (only build all)
 #           | regress (replay tests/fuzz/regressions/TARGET-*: exit 1 if any still fails)
 # The seed corpus tests/fuzz/corpus/TARGET is copied into build-fuzz/corpus/TARGET, which grows
 # between runs; crashes, timeouts and leaks go to build-fuzz/artifacts/TARGET/.
@@ -42,6 +42,7 @@ mkdir -p "$corpus" "$artifacts"
 if [ -d "tests/fuzz/corpus/$target" ]; then cp -n "tests/fuzz/corpus/$target"/* "$corpus"/ 2>/dev/null || true; fi
 case "$target" in
   fuzz_cdt) max_len=128 ;;
+  fuzz_mesher) max_len=64 ;;
   *) max_len=8192 ;;
 esac
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}

@@ -5,7 +5,10 @@
 # method acute). Prints the pass rate and the failing seeds with the reason.
 # Usage: scripts/stress/run.sh N METHOD [FIRST_SEED]
 #   env: ACUTE (default build/bin/acute), TIMEOUT (seconds per run, default 120),
-#        OUT (work directory, default build-stress/METHOD), EXTRA (more `acute mesh` arguments)
+#        OUT (work directory, default build-stress/METHOD), EXTRA (more `acute mesh` arguments),
+#        MESHCHECK (default ../shared/tools/meshcheck), BUDGET (seconds: start no new domain after that; the summary counts the ones run)
+# OUT/log.txt: one line per seed (seed, ok | bounds | INVALID | ERROR, seconds); OUT/failing.txt:
+# the failing seeds with the reason.
 # Exit status 1 when any domain fails validity (or, for acute, the bounds).
 set -uo pipefail
 cd "$(dirname "$0")/../.."
@@ -15,7 +18,7 @@ first=${3:-1}
 acute=${ACUTE:-build/bin/acute}
 timeout_s=${TIMEOUT:-120}
 out=${OUT:-build-stress/$method}
-meshcheck=../shared/tools/meshcheck
+meshcheck=${MESHCHECK:-../shared/tools/meshcheck}
 [ -x "$acute" ] || { echo "stress: $acute not found (build it first)" >&2; exit 3; }
 [ -f "$meshcheck" ] || { echo "stress: $meshcheck not found" >&2; exit 3; }
 mkdir -p "$out"
@@ -25,12 +28,15 @@ bounds=()
 pass=0 valid=0 fail=0
 failures=()
 start=$(date +%s)
+run=0
 for (( seed = first; seed < first + n; seed++ )); do
+  if [ -n "${BUDGET:-}" ] && [ $(( $(date +%s) - start )) -ge "$BUDGET" ]; then break; fi
+  run=$((run + 1))
   d="$out/s$seed.poly"
   m="$out/s$seed.off"
   rm -f "$m"
   if ! python3 scripts/stress/gen_domain.py "$seed" "$d"; then
-    failures+=("$seed: generator failed"); fail=$((fail + 1)); continue
+    failures+=("$seed: generator failed"); fail=$((fail + 1)); echo "$seed ERROR" >>"$out/log.txt"; continue
   fi
   t0=$(date +%s.%N)
   # shellcheck disable=SC2086
@@ -38,13 +44,13 @@ for (( seed = first; seed < first + n; seed++ )); do
   rc=$?
   secs=$(echo "$(date +%s.%N) - $t0" | bc)
   if [ $rc -eq 124 ] || [ $rc -eq 137 ]; then
-    failures+=("$seed: timeout after ${timeout_s}s"); fail=$((fail + 1)); continue
+    failures+=("$seed: timeout after ${timeout_s}s"); fail=$((fail + 1)); echo "$seed ERROR" >>"$out/log.txt"; continue
   fi
   if [ $rc -ne 0 ] && [ $rc -ne 1 ]; then
-    failures+=("$seed: acute exit $rc: $(head -c 300 "$out/s$seed.err" | head -1)"); fail=$((fail + 1)); continue
+    failures+=("$seed: acute exit $rc: $(head -c 300 "$out/s$seed.err" | head -1)"); fail=$((fail + 1)); echo "$seed ERROR" >>"$out/log.txt"; continue
   fi
   if [ ! -f "$m" ]; then
-    failures+=("$seed: acute exit $rc but no output"); fail=$((fail + 1)); continue
+    failures+=("$seed: acute exit $rc but no output"); fail=$((fail + 1)); echo "$seed ERROR" >>"$out/log.txt"; continue
   fi
   report=$(python3 "$meshcheck" "$m" --domain "$d" --tolerance 1e-10 "${bounds[@]}" 2>&1)
   mc=$?
@@ -58,9 +64,10 @@ for (( seed = first; seed < first + n; seed++ )); do
     failures+=("$seed: meshcheck exit $mc: ${why:-$(echo "$report" | tail -1 | head -c 300)}")
     fail=$((fail + 1))
   fi
-  printf '%s %s %.2fs\n' "$seed" "$([ $mc -eq 0 ] && echo ok || echo FAIL)" "$secs" >>"$out/log.txt"
+  printf '%s %s %.2fs\n' "$seed" "$([ $mc -eq 0 ] && echo ok || { [ $mc -eq 1 ] && echo bounds || echo INVALID; })" "$secs" >>"$out/log.txt"
 done
 elapsed=$(( $(date +%s) - start ))
-echo "stress $method: $pass/$n passed, $valid/$n valid meshes, $fail failing ($elapsed s, seeds $first..$((first + n - 1)))"
-for f in "${failures[@]}"; do echo "  seed $f"; done
+echo "stress $method: $pass/$run passed, $valid/$run valid meshes, $fail failing ($elapsed s, seeds $first..$((first + run - 1)))"
+: >"$out/failing.txt"
+for f in "${failures[@]}"; do echo "  seed $f"; echo "$f" >>"$out/failing.txt"; done
 [ $fail -eq 0 ]

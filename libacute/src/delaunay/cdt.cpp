@@ -6,6 +6,7 @@
 #include "delaunay/triangulation.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <numeric>
 #include <string>
@@ -58,6 +59,20 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
   const std::vector<int> first = first_occurrence(tr, n);
   for (std::size_t i = 0; i < n; ++i) stats.merged_duplicates += tr.rep(static_cast<int>(i)) != static_cast<int>(i) ? 1 : 0;
 
+  // With crossings split, a repeated segment would be inserted again along its exact line beside
+  // the first copy's chain through rounded crossing points, and cross it: keep the first copy.
+  std::vector<char> repeated(domain.segments.size(), 0);
+  if (tr.split_crossings) {
+    std::vector<std::pair<std::uint64_t, std::size_t>> keys;
+    keys.reserve(domain.segments.size());
+    for (std::size_t s = 0; s < domain.segments.size(); ++s) {
+      const auto a = static_cast<std::uint32_t>(tr.rep(domain.segments[s][0])), b = static_cast<std::uint32_t>(tr.rep(domain.segments[s][1]));
+      keys.emplace_back((static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b), s);
+    }
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t k = 1; k < keys.size(); ++k)
+      if (keys[k].first == keys[k - 1].first) repeated[keys[k].second] = 1;
+  }
   for (std::size_t s = 0; s < domain.segments.size(); ++s) {
     const int a = tr.rep(domain.segments[s][0]);
     const int b = tr.rep(domain.segments[s][1]);
@@ -65,6 +80,7 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
       stats.warnings.push_back("segment " + std::to_string(s) + " has zero length, ignored");
       continue;
     }
+    if (repeated[s]) continue;
     try {
       tr.insert_segment(a, b, static_cast<int>(s));
     } catch (const InvalidInput& e) {
@@ -76,9 +92,23 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
   {
     std::vector<char> split(domain.segments.size(), 0);
     for (int s : tr.split_segment_ids) split[static_cast<std::size_t>(s)] = 1;
+    if (!tr.overlapping_segments.empty()) {
+      // Overlapping segments share edges: one split bends all of them (union-find over overlaps).
+      std::vector<int> parent(domain.segments.size());
+      std::iota(parent.begin(), parent.end(), 0);
+      auto root = [&](int x) {
+        while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+        return x;
+      };
+      for (const auto& [x, y] : tr.overlapping_segments) parent[static_cast<std::size_t>(root(x))] = root(y);
+      std::vector<char> group_split(domain.segments.size(), 0);
+      for (std::size_t s = 0; s < split.size(); ++s)
+        if (split[s]) group_split[static_cast<std::size_t>(root(static_cast<int>(s)))] = 1;
+      for (std::size_t s = 0; s < split.size(); ++s) split[s] = group_split[static_cast<std::size_t>(root(static_cast<int>(s)))];
+    }
     for (std::size_t s = 0; s < domain.segments.size(); ++s) {
       const int a = tr.rep(domain.segments[s][0]), b = tr.rep(domain.segments[s][1]);
-      if (a == b || split[s]) continue;
+      if (a == b || split[s] || repeated[s]) continue;
       const int at = tr.find_missing_segment(a, b);
       if (at >= 0)
         throw InternalError(where + ": build_cdt lost segment " + std::to_string(s) + " " + point_text(tr.point(a)) + "-" +
@@ -172,7 +202,7 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
   }
   std::size_t dropped_segments = 0;
   for (std::size_t s = 0; s < present.size(); ++s) {
-    if (present[s] || domain.segments[s][0] == domain.segments[s][1] ||
+    if (present[s] || repeated[s] || domain.segments[s][0] == domain.segments[s][1] ||
         tr.rep(domain.segments[s][0]) == tr.rep(domain.segments[s][1]))
       continue;
     if (++dropped_segments <= 5)

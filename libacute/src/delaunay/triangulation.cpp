@@ -4,6 +4,7 @@
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <utility>
 
@@ -63,7 +64,9 @@ int Triangulation::index_in(int t, int nb) const {
 }
 
 void Triangulation::set_segment_both(int t, int i, int seg) {
-  seg_[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(i)] = seg;
+  int& old = seg_[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(i)];
+  if (split_crossings && old >= 0 && seg >= 0 && old != seg) overlapping_segments.emplace_back(old, seg);
+  old = seg;
   const int nb = tris_[static_cast<std::size_t>(t)].n[i];
   seg_[3 * static_cast<std::size_t>(nb) + static_cast<std::size_t>(index_in(nb, t))] = seg;
 }
@@ -316,14 +319,25 @@ void Triangulation::insert_segment(int a, int b, int seg) {
       if (s2 >= 0) {
         if (!split_crossings)
           throw InvalidInput("segments " + std::to_string(s2) + " and " + std::to_string(seg) + " cross");
-        // Split both at the (rounded) intersection point and start again on the pieces.
+        // Split both at the (rounded) intersection point x and start again on the pieces. x is
+        // off both lines by rounding, so the pieces a-x and x-c of this segment end at c, the
+        // next vertex exactly on a-b: vertices on a-b beyond x stay on the chain, and the rest
+        // c-b is inserted along the exact line again. The crossed edge u-w is one edge of its
+        // chain (nothing lies inside it). Removing its constraint can leave the triangulation
+        // non-Delaunay there: Lawson flips restore the CDT before x is inserted (Bowyer-Watson
+        // needs a CDT for a star-shaped cavity).
         const Point2 pu = point(u), pw = point(w);
         const Point2 d = pb - pa, e = pw - pu;
         const double den = d.x() * e.y() - d.y() * e.x();
         const Point2 f = pu - pa;
-        const double s = (f.x() * e.y() - f.y() * e.x()) / den;
+        // Nearly parallel pieces (crossings at one point, rounded apart) can make den 0 or the
+        // parameter absurd: keep x on the segment (NaN: its middle).
+        double s = (f.x() * e.y() - f.y() * e.x()) / den;
+        s = std::isnan(s) ? 0.5 : std::clamp(s, 0.0, 1.0);
         const Point2 x = pa + s * d;
+        const int c = next_on_line(cur, ei, u, w, pa, pb, b);
         set_segment_both(cur, ei, -1);
+        restore_delaunay(cur, ei);
         ++crossings_split;
         split_segment_ids.push_back(s2);
         split_segment_ids.push_back(seg);
@@ -331,7 +345,8 @@ void Triangulation::insert_segment(int a, int b, int seg) {
         insert_segment(u, xv, s2);
         insert_segment(xv, w, s2);
         insert_segment(a, xv, seg);
-        insert_segment(xv, b, seg);
+        insert_segment(xv, c, seg);
+        insert_segment(c, b, seg);
         return;
       }
       const int nb = tris_[static_cast<std::size_t>(cur)].n[ei];
@@ -467,6 +482,69 @@ void Triangulation::retriangulate(int a, int end, int seg) {
     for (int k = 0; k < 3; ++k) vtri_[static_cast<std::size_t>(tr.v[k])] = t;
   }
   last_ = new_tris_.front();
+}
+
+int Triangulation::next_on_line(int cur, int ei, int u, int w, const Point2& pa, const Point2& pb, int b) const {
+  for (;;) {
+    const int nb = tris_[static_cast<std::size_t>(cur)].n[ei];
+    const int j = index_in(nb, cur);
+    const int vv = tris_[static_cast<std::size_t>(nb)].v[j];
+    ACUTE_ASSERT(vv != infinite_);
+    if (vv == b) return b;
+    const Sign o = orient2d(pa, pb, point(vv));
+    if (o == Sign::Zero) return vv;
+    (o == Sign::Negative ? u : w) = vv;
+    cur = nb;
+    const Tri& tn = tris_[static_cast<std::size_t>(nb)];
+    ei = (tn.v[0] != u && tn.v[0] != w) ? 0 : ((tn.v[1] != u && tn.v[1] != w) ? 1 : 2);
+  }
+}
+
+void Triangulation::flip(int t, int i) {
+  const int nb = tris_[static_cast<std::size_t>(t)].n[i];
+  const int j = index_in(nb, t);
+  const Tri a = tris_[static_cast<std::size_t>(t)], b = tris_[static_cast<std::size_t>(nb)];
+  const int p = a.v[i], x = a.v[next3(i)], y = a.v[prev3(i)], q = b.v[j];
+  const int* sa = &seg_[3 * static_cast<std::size_t>(t)];
+  const int* sb = &seg_[3 * static_cast<std::size_t>(nb)];
+  // Outer edges: y-p (A), p-x (B) of t; x-q (C), q-y (D) of nb.
+  const int A = a.n[next3(i)], B = a.n[prev3(i)], C = b.n[next3(j)], D = b.n[prev3(j)];
+  const int sA = sa[next3(i)], sB = sa[prev3(i)], sC = sb[next3(j)], sD = sb[prev3(j)];
+  const int iA = index_in(A, t), iC = index_in(C, nb);
+  // t = (p, x, q), nb = (q, y, p): counter-clockwise because p, x, q, y is a convex quadrilateral.
+  tris_[static_cast<std::size_t>(t)] = Tri{{p, x, q}, {C, nb, B}};
+  tris_[static_cast<std::size_t>(nb)] = Tri{{q, y, p}, {A, t, D}};
+  const int st[3] = {sC, -1, sB}, sn[3] = {sA, -1, sD};
+  for (int k = 0; k < 3; ++k) {
+    seg_[3 * static_cast<std::size_t>(t) + static_cast<std::size_t>(k)] = st[k];
+    seg_[3 * static_cast<std::size_t>(nb) + static_cast<std::size_t>(k)] = sn[k];
+  }
+  tris_[static_cast<std::size_t>(A)].n[iA] = nb;
+  tris_[static_cast<std::size_t>(C)].n[iC] = t;
+  vtri_[static_cast<std::size_t>(p)] = vtri_[static_cast<std::size_t>(x)] = t;
+  vtri_[static_cast<std::size_t>(q)] = vtri_[static_cast<std::size_t>(y)] = nb;
+  last_ = t;
+}
+
+void Triangulation::restore_delaunay(int t0, int i0) {
+  flip_stack_.clear();
+  flip_stack_.emplace_back(t0, i0);
+  while (!flip_stack_.empty()) {
+    const auto [t, i] = flip_stack_.back();
+    flip_stack_.pop_back();
+    if (!alive(t) || is_ghost(t) || segment(t, i) >= 0) continue;
+    const int nb = tris_[static_cast<std::size_t>(t)].n[i];
+    if (is_ghost(nb)) continue;
+    const Tri& a = tris_[static_cast<std::size_t>(t)];
+    const int q = tris_[static_cast<std::size_t>(nb)].v[index_in(nb, t)];
+    if (incircle(point(a.v[0]), point(a.v[1]), point(a.v[2]), point(q)) != Sign::Positive) continue;
+    flip(t, i);
+    // The four outer edges: 0 and 2 of both new triangles.
+    flip_stack_.emplace_back(t, 0);
+    flip_stack_.emplace_back(t, 2);
+    flip_stack_.emplace_back(nb, 0);
+    flip_stack_.emplace_back(nb, 2);
+  }
 }
 
 int Triangulation::find_missing_segment(int a, int b) const {

@@ -52,6 +52,9 @@ class Triangulation {
 
   bool split_crossings = false;
   std::vector<int> split_segment_ids;  ///< segments split at a rounded crossing point (may repeat)
+  /// Pairs of segments sharing a constrained edge (collinear overlap; recorded with split_crossings):
+  /// the edge carries one label, so a split of it bends both.
+  std::vector<std::pair<int, int>> overlapping_segments;
   std::size_t points_on_segments = 0;  ///< vertices found in a segment's interior
   std::size_t crossings_split = 0;
 
@@ -95,6 +98,15 @@ class Triangulation {
   void free_slot(int t);
   void set_segment_both(int t, int i, int seg);
   void retriangulate(int a, int end, int seg);
+  // Crossing splits: the edge of t opposite index i becomes p-q (both triangles finite).
+  void flip(int t, int i);
+  // Lawson flips from the unconstrained edge i of t until every unconstrained edge they touch is
+  // locally Delaunay: restores the CDT after a constraint is removed.
+  void restore_delaunay(int t, int i);
+  // From the constrained edge ei of cur crossed by the line pa->pb (u right, w left of it), the
+  // first vertex beyond it lying exactly on that line (b at the latest), walking through edges
+  // whether constrained or not.
+  int next_on_line(int cur, int ei, int u, int w, const Point2& pa, const Point2& pb, int b) const;
   void triangulate_chain(int p, int q, int lo, int hi);
   int index_in(int t, int nb) const;
   int& link(int v) { return v == infinite_ ? link_inf_ : link_[static_cast<std::size_t>(v)]; }
@@ -122,6 +134,7 @@ class Triangulation {
   std::vector<EdgeRec> recs_;
   std::vector<std::array<int, 3>> split_edges_;
   std::vector<std::array<int, 4>> chain_stack_;
+  std::vector<std::pair<int, int>> flip_stack_;
   int depth_ = 0;
 };
 
