@@ -27,7 +27,8 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
 # through refinement and the repair): minutes each under ASan. The same code runs in the fast
 # tests on small domains.
 # ValidateDomain.large_inputs_are_fast... asserts wall-clock time (< 1 s), meaningless under ASan.
-CI_SLOW='RepairKeepVertices\.|RepairMesh\.shared_meshes|Cdt\.cgshop_instances|Refine\.classic_domains|CvtRegression\.(sweden|debug2|guitar)|ValidateDomain\.large_inputs_are_fast'
+# RandomPolygons.every_mesh...: 100 pipeline runs (~40 s CPU in Release, far more under ASan).
+CI_SLOW='RandomPolygons\.every_mesh|RepairKeepVertices\.|RepairMesh\.shared_meshes|Cdt\.cgshop_instances|Refine\.classic_domains|CvtRegression\.(sweden|debug2|guitar)|ValidateDomain\.large_inputs_are_fast'
 args=()
 [ $ci = 1 ] && args=(-E "$CI_SLOW")
 rc=0
