@@ -50,7 +50,13 @@ int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
   options.cdt.crossing = args.split_crossings ? CrossingSegments::Split : CrossingSegments::Error;
   if (!args.pictures.empty()) check_picture_prefix(args.pictures, {args.output, args.dual});
   ProgressLine progress(global, t0);
-  if (progress.wanted()) options.observer = [&progress](const MeshProgress& p) { progress.update(p.phase, p.iteration, p.bad); };
+  if (progress.wanted())
+    options.observer = [&progress](const MeshProgress& p) {
+      if (p.phase == "cvt")
+        progress.update_cvt(p.iteration, p.step, p.energy, p.gradient_norm);
+      else
+        progress.update(p.phase, p.iteration, p.bad);
+    };
   MeshResult result;
   try {
     result = generate_mesh(domain, options);
@@ -158,7 +164,7 @@ void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code
   cmd->add_flag("--split-crossings", args->split_crossings, "Split crossing segments instead of failing");
   cmd->add_flag("--json", args->json, "Print a JSON report on stdout");
   cmd->add_flag("-q,--quiet", const_cast<GlobalOptions&>(global).quiet, "No output but errors");
-  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "Log each phase on stderr (off a terminal also each repair iteration)");
+  cmd->add_flag("-v,--verbose", const_cast<GlobalOptions&>(global).verbose, "Log each phase on stderr (off a terminal also each CVT iteration with its energy and gradient norm, and each repair iteration)");
   cmd->callback([args, &global, &exit_code] { exit_code = run_guarded([&] { return run_mesh(*args, global); }); });
 }
 

@@ -50,6 +50,14 @@ void ProgressLine::update(const std::string& phase, int iteration, std::size_t b
   if (terminal_ && new_phase) draw_locked();  // the ticker redraws the rest
 }
 
+void ProgressLine::update_cvt(int iteration, const char* step, double energy, double gradient_norm) {
+  update("cvt", iteration, 0);
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!stopped_ && verbose_ && !terminal_ && iteration > 0)
+    std::fprintf(stderr, "[%8.3f s] cvt iteration %d (%s): energy %.9g, gradient norm %.6g\n", elapsed(), iteration, step, energy,
+                 gradient_norm);
+}
+
 void ProgressLine::draw_locked() {
   char line[160];
   int n = std::snprintf(line, sizeof line, "acute: %-22s", phase_label(phase_));

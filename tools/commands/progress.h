@@ -31,6 +31,8 @@ class ProgressLine {
 
   /// A report from the library; `bad` is shown in the repair phase only.
   void update(const std::string& phase, int iteration, std::size_t bad);
+  /// A CVT iteration: with -v off a terminal, logged with its energy and gradient norm.
+  void update_cvt(int iteration, const char* step, double energy, double gradient_norm);
 
   /// Stops the redrawing and clears the line; later updates are ignored.
   void finish();

@@ -28,6 +28,8 @@ struct MeshProgress {
   int iteration = 0;
   std::size_t bad = 0;     ///< bad triangles left (repair)
   double energy = 0;       ///< CVT energy
+  double gradient_norm = 0;  ///< CVT: |dF/dX| over the moving coordinates
+  const char* step = "";   ///< CVT: "lloyd" or "lbfgs"
 };
 
 struct MeshOptions {

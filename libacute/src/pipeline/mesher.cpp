@@ -108,7 +108,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
         cp.move_tolerance = 3e-3;
       }
       if (options.observer)
-        cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy}); };
+        cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy, p.gradient_norm, p.phase}); };
       try {
         CvtResult cvt = cvt_mesh(domain, cp);
         result.mesh = std::move(cvt.mesh);
