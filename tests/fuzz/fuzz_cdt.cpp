@@ -8,35 +8,18 @@
 #include <acute/delaunay/cdt.h>
 #include <acute/io/io.h>
 
-namespace {
-
-struct Reader {
-  const std::uint8_t* data;
-  std::size_t size;
-  std::size_t pos = 0;
-  std::uint8_t next() { return pos < size ? data[pos++] : 0; }
-};
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace acute_fuzz;
   Reader in{data, size};
   const std::uint8_t flags = in.next();
-  const int grid = 4 << (2 * ((flags >> 2) & 3));
-  // Scales/offsets keep integer-grid geometry exact in doubles.
-  static const double scales[8] = {1, 1, 0x1p-30, 0x1p30, 0x1p-60, 0x1p60, 1, 0x1p-20};
-  static const double offsets[8] = {0, -8, 0, 0, 0, 0, 0x1p40, 0x1p-10};
-  const int mode = (flags >> 4) & 7;
-  const double scale = scales[mode], offset = offsets[mode];
-  auto coord = [&](std::uint8_t b) { return offset + scale * static_cast<double>(b % grid); };
+  const GridCoordinates grid(flags);
 
   Domain d;
   d.name = "fuzz_cdt";
   d.convex_hull = flags & 1;
   const int n = 3 + in.next() % 18;
   for (int i = 0; i < n; ++i) {
-    const double x = coord(in.next()), y = coord(in.next());
+    const double x = grid.point(in.next()), y = grid.point(in.next());
     d.points.emplace_back(x, y);
     d.point_markers.push_back(0);
   }
@@ -50,7 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const int h = in.next() % 3;
   for (int i = 0; i < h; ++i) {
     const std::uint8_t x = in.next(), y = in.next();
-    d.holes.emplace_back(offset + scale * (x % grid + 0.5), offset + scale * (y % grid + 0.5));
+    d.holes.emplace_back(grid.hole(x), grid.hole(y));
   }
 
   acute::CdtOptions options;

@@ -275,4 +275,29 @@ inline std::string verify_cdt(const Mesh& mesh, const Domain& domain, const CdtC
   return {};
 }
 
+/// The fuzz input as a byte stream; missing bytes read as 0.
+struct Reader {
+  const std::uint8_t* data;
+  std::size_t size;
+  std::size_t pos = 0;
+  std::uint8_t next() { return pos < size ? data[pos++] : 0; }
+};
+
+/// Coordinates of the PSLG targets: points on an integer grid (4, 16, 64 or 256 per side, flags
+/// bits 2-3) with a power-of-two scale and offset (bits 4-6), so the geometry stays exact in doubles.
+struct GridCoordinates {
+  int grid;
+  double scale, offset;
+  explicit GridCoordinates(std::uint8_t flags) : grid(4 << (2 * ((flags >> 2) & 3))) {
+    static const double scales[8] = {1, 1, 0x1p-30, 0x1p30, 0x1p-60, 0x1p60, 1, 0x1p-20};
+    static const double offsets[8] = {0, -8, 0, 0, 0, 0, 0x1p40, 0x1p-10};
+    const int mode = (flags >> 4) & 7;
+    scale = scales[mode];
+    offset = offsets[mode];
+  }
+  double point(std::uint8_t b) const { return offset + scale * static_cast<double>(b % grid); }
+  /// Hole seeds sit at cell centres, never on a grid point.
+  double hole(std::uint8_t b) const { return offset + scale * (b % grid + 0.5); }
+};
+
 }  // namespace acute_fuzz

@@ -11,46 +11,19 @@
 
 #include <acute/mesher.h>
 
-namespace {
-
-struct Reader {
-  const std::uint8_t* data;
-  std::size_t size;
-  std::size_t pos = 0;
-  std::uint8_t next() { return pos < size ? data[pos++] : 0; }
-};
-
-double area_of(const acute::Mesh& mesh) {
-  double a = 0;
-  for (auto fh : mesh.faces()) {
-    acute::Point2 p[3];
-    int k = 0;
-    for (auto vh : mesh.fv_range(fh)) p[k++ % 3] = acute::point2(mesh, vh);
-    a += 0.5 * ((p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x());
-  }
-  return a;
-}
-
-}  // namespace
-
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace acute_fuzz;
   Reader in{data, size};
   const std::uint8_t flags = in.next();
   const std::size_t target = 10 + in.next() % 150;
-  const int grid = 4 << (2 * ((flags >> 2) & 3));
-  static const double scales[8] = {1, 1, 0x1p-30, 0x1p30, 0x1p-60, 0x1p60, 1, 0x1p-20};
-  static const double offsets[8] = {0, -8, 0, 0, 0, 0, 0x1p40, 0x1p-10};
-  const int mode = (flags >> 4) & 7;
-  const double scale = scales[mode], offset = offsets[mode];
-  auto coord = [&](std::uint8_t b) { return offset + scale * static_cast<double>(b % grid); };
+  const GridCoordinates grid(flags);
 
   Domain d;
   d.name = "fuzz_mesher";
   d.convex_hull = flags & 1;
   const int n = 3 + in.next() % 10;
   for (int i = 0; i < n; ++i) {
-    const double x = coord(in.next()), y = coord(in.next());
+    const double x = grid.point(in.next()), y = grid.point(in.next());
     d.points.emplace_back(x, y);
   }
   if (flags & 2)
@@ -63,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const int h = in.next() % 2;
   for (int i = 0; i < h; ++i) {
     const std::uint8_t x = in.next(), y = in.next();
-    d.holes.emplace_back(offset + scale * (x % grid + 0.5), offset + scale * (y % grid + 0.5));
+    d.holes.emplace_back(grid.hole(x), grid.hole(y));
   }
 
   acute::MeshOptions options;  // method acute, [30, 90)
@@ -81,7 +54,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check.delaunay = false;
   const std::string problem = verify_cdt(result.mesh, d, check);
   if (!problem.empty()) fail("generate_mesh: " + problem);
-  const double want = area_of(cdt), got = area_of(result.mesh);
+  const double want = acute::mesh_area(cdt), got = acute::mesh_area(result.mesh);
   if (!(std::abs(got - want) <= 1e-9 * std::abs(want))) fail("generate_mesh: area " + std::to_string(got) + " != CDT area " + std::to_string(want));
   if (result.status == acute::MeshStatus::BoundsNotMet && result.remaining.empty()) fail("generate_mesh: bounds not met but no triangle listed");
   return 0;
