@@ -9,6 +9,8 @@
 #include <acute/repair_mesh.h>
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include "support/cgshop_samples.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -325,13 +327,10 @@ TEST(RepairKeepVertices, every_vertex_kept_and_no_obtuse_angle) {
 }
 
 void repair_small_cgshop_instances(bool require_non_obtuse) {
-  const fs::path dir = fs::path(ACUTE_SHARED_DIR) / "domains" / "cgshop2025" / "instances";
-  if (!fs::is_directory(dir)) GTEST_SKIP() << dir << " absent";
+  const auto instances = test::small_cgshop_instances();
+  if (instances.empty()) GTEST_SKIP() << "the shared CG:SHOP instances are absent";
   int n = 0;
-  for (const char* uid : {"ortho_10_d2723dcc", "point-set_10_13860916", "simple-polygon_10_297edd18",
-                          "simple-polygon-exterior_10_310dc6c7", "simple-polygon-exterior-20_10_8c4306da"}) {
-    const fs::path path = dir / (std::string(uid) + ".instance.json");
-    if (!fs::exists(path)) continue;
+  for (const auto& [uid, path] : instances) {
     const Domain d = io::read_cgshop(path.string());
     RepairMeshOptions o;
     o.allow_right = true;
@@ -350,7 +349,7 @@ void repair_small_cgshop_instances(bool require_non_obtuse) {
     }
     ++n;
   }
-  EXPECT_GE(n, 1) << "instances found in " << dir;
+  EXPECT_GE(n, 1);
 }
 
 TEST(RepairKeepVertices, small_cgshop_instances_keep_every_point_and_become_non_obtuse) { repair_small_cgshop_instances(true); }

@@ -5,6 +5,8 @@
 #include <acute/repair/non_obtuse.h>
 
 #include <gmpxx.h>
+#include "support/cgshop_samples.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -88,13 +90,10 @@ TEST(NonObtuse, slanted_segment_gets_exact_rational_points) {
 }
 
 TEST(NonObtuse, small_cgshop_instances_become_non_obtuse) {
-  const fs::path dir = fs::path(ACUTE_SHARED_DIR) / "domains" / "cgshop2025" / "instances";
-  if (!fs::is_directory(dir)) GTEST_SKIP() << dir << " absent";
+  const auto instances = test::small_cgshop_instances();
+  if (instances.empty()) GTEST_SKIP() << "the shared CG:SHOP instances are absent";
   int n = 0;
-  for (const char* uid : {"ortho_10_d2723dcc", "point-set_10_13860916", "simple-polygon_10_297edd18",
-                          "simple-polygon-exterior_10_310dc6c7", "simple-polygon-exterior-20_10_8c4306da"}) {
-    const fs::path path = dir / (std::string(uid) + ".instance.json");
-    if (!fs::exists(path)) continue;
+  for (const auto& [uid, path] : instances) {
     const Domain d = io::read_cgshop(path.string());
     const NonObtuseResult r = non_obtuse_triangulation(d);
     expect_conforming(d, r, uid);
