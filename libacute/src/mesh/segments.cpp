@@ -27,8 +27,10 @@ const SegmentTable& segment_table(const Mesh& mesh) {
 
 const std::array<Point2, 2>& segment_endpoints(const Mesh& mesh, int id) { return segment_table(mesh).at(static_cast<std::size_t>(id)); }
 
-Point2 project_on_segment(const Mesh& mesh, int id, const Point2& p) {
-  const auto& [a, b] = segment_endpoints(mesh, id);
+Point2 project_on_segment(const Mesh& mesh, int id, const Point2& p) { return project_on_line(segment_endpoints(mesh, id), p); }
+
+Point2 project_on_line(const std::array<Point2, 2>& ends, const Point2& p) {
+  const auto& [a, b] = ends;
   const Point2 d = b - a;
   const double t = (p - a).dot(d) / d.squaredNorm();
   // Interpolate from the nearer endpoint: keeps points near an end accurate.

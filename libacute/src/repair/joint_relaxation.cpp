@@ -17,6 +17,7 @@ constexpr double kDeg = 180.0 / 3.14159265358979323846;
 struct Patch {
   std::vector<VertexHandle> movable;
   std::vector<Point2> axis;  ///< unit direction of the segment for OnSegment vertices, (0, 0) when free
+  std::vector<std::array<Point2, 2>> ends;  ///< that segment's endpoints
   std::vector<std::array<VertexHandle, 3>> faces;
   std::vector<std::array<int, 3>> local;
   std::vector<std::array<bool, 3>> exempt;  ///< min bound dropped at that corner (forced, narrow sector)
@@ -29,19 +30,21 @@ Patch make_patch(const Mesh& mesh, const std::vector<VertexHandle>& vertices, co
     if (mesh.status(vh).deleted() || index.count(vh.idx())) continue;
     const auto& d = mesh.data(vh);
     Point2 axis(0, 0);
+    std::array<Point2, 2> ends{};
     if (d.kind == VertexKind::Input) {
       if (movable_only) continue;
     } else if (d.kind == VertexKind::OnSegment) {
       if (d.segment < 0 || static_cast<std::size_t>(d.segment) >= segment_table(mesh).size()) {
         if (movable_only) continue;
       } else {
-        const auto& ends = segment_endpoints(mesh, d.segment);
+        ends = segment_endpoints(mesh, d.segment);
         axis = (ends[1] - ends[0]).normalized();
       }
     }
     index.emplace(vh.idx(), static_cast<int>(patch.movable.size()));
     patch.movable.push_back(vh);
     patch.axis.push_back(axis);
+    patch.ends.push_back(ends);
   }
   std::vector<FaceHandle> faces;
   for (auto vh : patch.movable)
@@ -138,8 +141,7 @@ bool relax_jointly(Mesh& mesh, const std::vector<VertexHandle>& vertices, const 
     while (step > 1e-7 * scale) {
       for (std::size_t i = 0; i < n; ++i) {
         Point2 q = current[i] - (step / gmax) * grad[i];
-        const auto& d = mesh.data(patch.movable[i]);
-        if (patch.axis[i] != Point2(0, 0)) q = project_on_segment(mesh, d.segment, q);
+        if (patch.axis[i] != Point2(0, 0)) q = project_on_line(patch.ends[i], q);
         trial[i] = q;
         set_point2(mesh, patch.movable[i], q);
       }

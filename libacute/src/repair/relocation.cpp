@@ -70,11 +70,12 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
                           static_cast<std::size_t>(data.segment) < segment_table(mesh).size();
   if (data.kind == VertexKind::OnSegment && !on_segment) return false;
   Point2 axis(1, 0);
+  std::array<Point2, 2> ends{};
   if (on_segment) {
-    const auto& ends = segment_endpoints(mesh, data.segment);
+    ends = segment_endpoints(mesh, data.segment);
     axis = (ends[1] - ends[0]).normalized();
   }
-  auto place = [&](const Point2& p) { return on_segment ? project_on_segment(mesh, data.segment, p) : p; };
+  auto place = [&](const Point2& p) { return on_segment ? project_on_line(ends, p) : p; };
 
   const double base = star_energy(mesh, vh, bounds, forced);
   double best = base;

@@ -337,6 +337,7 @@ class Repairer {
     std::sort(level1.begin(), level1.end(), [](const Outcome& a, const Outcome& b) { return a.score < b.score; });
     if (level1.size() > 6) level1.resize(6);
     for (const auto& first : level1) {
+      if (out_of_time()) break;
       std::vector<Outcome> level2;
       expand(first.mesh, region.forced, level2);
       for (auto& o : level2)
@@ -356,6 +357,7 @@ class Repairer {
     bool joint_first = false;  // candidates whose connectivity Delaunay restoration would undo
     auto attempt = [&](auto&& operation) {
       ++candidate_;
+      if (!out.empty() && out_of_time()) return;  // one cluster's search must not outlast the time limit
       Mesh sub = sub0;
       if (!operation(sub)) return;  // (no garbage collection: sub vertex indices map to the big mesh)
       if (paranoid_) {

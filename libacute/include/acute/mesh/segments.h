@@ -23,4 +23,8 @@ const std::array<Point2, 2>& segment_endpoints(const Mesh& mesh, int id);
 /// The point of segment `id`'s supporting line nearest to p (rounded to doubles).
 Point2 project_on_segment(const Mesh& mesh, int id, const Point2& p);
 
+/// The same for a segment given by its endpoints: for hot loops that looked the segment up once
+/// (the table lookup goes through a named mesh property).
+Point2 project_on_line(const std::array<Point2, 2>& ends, const Point2& p);
+
 }  // namespace acute
