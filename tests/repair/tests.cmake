@@ -2,6 +2,7 @@ acute_add_test(repair_tests
   SOURCES
     repair/angle_bounds_test.cpp
     repair/joint_relaxation_test.cpp
+    repair/local_remesh_test.cpp
     repair/non_obtuse_test.cpp
     repair/region_test.cpp
     repair/repair_test.cpp

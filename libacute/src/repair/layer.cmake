@@ -4,6 +4,7 @@ acute_add_layer(repair
     src/repair/clusters.cpp
     src/repair/exact_triangulation.cpp
     src/repair/joint_relaxation.cpp
+    src/repair/local_remesh.cpp
     src/repair/non_obtuse.cpp
     src/repair/polygon_centre.cpp
     src/repair/region.cpp

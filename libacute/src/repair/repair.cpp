@@ -9,11 +9,13 @@
 #include <acute/repair/joint_relaxation.h>
 #include <acute/repair/relocation.h>
 
+#include "repair/local_remesh.h"
 #include "repair/region.h"
 
 #include <acute/core/errors.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <chrono>
@@ -170,8 +172,8 @@ class Repairer {
       const Score base = score(region.sub, region.forced);
       if (trace_) {
         const auto p = face_points(mesh_, c.bad[0]);
-        std::fprintf(stderr, "it %d cluster at (%.6g, %.6g): %zu bad, region %zu faces, base bad %zu worst %.4f\n", it, p[0].x(),
-                     p[0].y(), c.bad.size(), region.big_faces.size(), base.bad, base.worst);
+        std::fprintf(stderr, "it %d cluster at (%.6g, %.6g): %zu bad, region %zu faces, base infeasible %zu bad %zu worst %.4f\n", it, p[0].x(),
+                     p[0].y(), c.bad.size(), region.big_faces.size(), base.infeasible, base.bad, base.worst);
       }
       Mesh best;
       Score best_score = base;
@@ -320,7 +322,7 @@ class Repairer {
   /// results of the first level (two-step edits for clusters no single operation improves).
   void search(const detail::Region& region, bool deep, Mesh& best, Score& best_score) {
     std::vector<Outcome> level1;
-    expand(region.sub, region.forced, level1);
+    expand(region.sub, region.forced, level1, /*remesh=*/stuck_ >= 2);
     // Where one-vertex moves are stuck, the best few outcomes also get a joint relaxation.
     std::sort(level1.begin(), level1.end(), [](const Outcome& a, const Outcome& b) { return a.score < b.score; });
     for (std::size_t i = 0; i < std::min<std::size_t>(3, level1.size()); ++i) {
@@ -339,7 +341,7 @@ class Repairer {
     for (const auto& first : level1) {
       if (out_of_time()) break;
       std::vector<Outcome> level2;
-      expand(first.mesh, region.forced, level2);
+      expand(first.mesh, region.forced, level2, /*remesh=*/false);
       for (auto& o : level2)
         if (o.score < best_score) best_score = o.score, best = std::move(o.mesh), best_candidate_ = 100 * first.candidate + o.candidate;
     }
@@ -352,7 +354,7 @@ class Repairer {
   };
 
   /// Applies each candidate operation to a copy of sub0 (then relocation) and collects the results.
-  void expand(const Mesh& sub0, const std::vector<bool>& forced, std::vector<Outcome>& out) {
+  void expand(const Mesh& sub0, const std::vector<bool>& forced, std::vector<Outcome>& out, bool remesh) {
     candidate_ = 0;
     bool joint_first = false;  // candidates whose connectivity Delaunay restoration would undo
     auto attempt = [&](auto&& operation) {
@@ -369,7 +371,7 @@ class Repairer {
       if (joint_first) relax_sub(sub, forced);
       smooth_sub(sub, forced, 3);
       const Score s = score(sub, forced);
-      if (trace_) std::fprintf(stderr, "    candidate %d: bad %zu worst %.4f\n", candidate_, s.bad, s.worst);
+      if (trace_) std::fprintf(stderr, "    candidate %d: infeasible %zu bad %zu worst %.4f\n", candidate_, s.infeasible, s.bad, s.worst);
       out.push_back(Outcome{s, std::move(sub), candidate_});
     };
     attempt([](Mesh&) { return true; });  // smoothing alone
@@ -479,6 +481,38 @@ class Repairer {
       return splits > 0;
     });
 
+    // Bridges: interior edges between two walls (the rungs of a strip one triangle wide). Splitting
+    // them gives the strip a middle row: at the apex of a sharp wedge, a one-row strip always leaves
+    // a base vertex of the apex triangle with two triangles on a straight segment (90 + 90).
+    auto on_wall = [](const Mesh& m, VertexHandle vh) {
+      for (auto heh : m.voh_range(vh))
+        if (is_constrained(m, m.edge_handle(heh))) return true;
+      return false;
+    };
+    std::vector<std::array<VertexHandle, 2>> bridges, near_bridges;
+    for (auto eh : sub0.edges()) {
+      if (sub0.status(eh).deleted() || sub0.is_boundary(eh) || is_constrained(sub0, eh) || sub0.data(eh).frozen) continue;
+      const auto heh = sub0.halfedge_handle(eh, 0);
+      const VertexHandle from = sub0.from_vertex_handle(heh), to = sub0.to_vertex_handle(heh);
+      if (!on_wall(sub0, from) || !on_wall(sub0, to)) continue;
+      bridges.push_back({from, to});
+      bool near = false;
+      for (auto w : v)
+        for (auto x : sub0.vv_range(w)) near = near || x == from || x == to || w == from || w == to;
+      if (near) near_bridges.push_back({from, to});
+    }
+    auto split_all = [&](Mesh& sub, const std::vector<std::array<VertexHandle, 2>>& edges) {
+      int splits = 0;
+      for (const auto& ends : edges) {
+        const auto heh = sub.find_halfedge(ends[0], ends[1]);
+        if (!heh.is_valid()) continue;
+        splits += split_edge(sub, sub.edge_handle(heh), 0.5 * (point2(sub, ends[0]) + point2(sub, ends[1]))).is_valid();
+      }
+      return splits > 0;
+    };
+    if (!near_bridges.empty()) attempt([&](Mesh& sub) { return split_all(sub, near_bridges); });
+    if (bridges.size() > near_bridges.size()) attempt([&](Mesh& sub) { return split_all(sub, bridges); });
+
     // Removals: collapse the edge opposite the smallest angle, or remove a corner of the worst face.
     const VertexHandle vb2 = v[(kmin + 1) % 3], vc2 = v[(kmin + 2) % 3];
     for (auto [from, to] : {std::pair{vb2, vc2}, std::pair{vc2, vb2}})
@@ -494,6 +528,23 @@ class Repairer {
     for (auto vh : sub0.vertices())
       if (!is_input(sub0, vh) && !sub0.is_boundary(vh) && sub0.valence(vh) <= 4)
         attempt([&, vh](Mesh& sub) { return remove_vertex(sub, vh); });
+
+    // A sharp corner of the worst face rebuilt as a graded two-row strip (see rebuild_wedge).
+    joint_first = true;
+    for (auto vh : v)
+      if (is_input(sub0, vh))
+        for (int rings : {3, 5}) attempt([&, vh, rings](Mesh& sub) { return detail::rebuild_wedge(sub, vh, rings); });
+    joint_first = false;
+
+    // A cluster that has resisted every single operation: the region re-sampled from scratch at
+    // the local spacing and somewhat finer (fresh random darts each time).
+    if (remesh) {
+      const double h = detail::movable_edge_median(sub0);
+      joint_first = true;
+      for (double scale : {1.0, 0.8, 0.65})
+        attempt([&, scale](Mesh& sub) { return detail::remesh_region(sub, scale * h, ++remesh_seed_); });
+      joint_first = false;
+    }
   }
 
   Mesh& mesh_;
@@ -506,6 +557,7 @@ class Repairer {
   double paranoid_area_ = 0;
   std::chrono::steady_clock::time_point t0_;
   int stuck_ = 0;
+  std::uint32_t remesh_seed_ = 0;
   bool trace_ = std::getenv("ACUTE_TRACE") != nullptr;
   bool paranoid_ = std::getenv("ACUTE_PARANOID") != nullptr;
   RepairResult result_;

@@ -1,0 +1,254 @@
+#include "repair/local_remesh.h"
+
+#include <acute/mesh/geometry.h>
+#include <acute/ops/delaunay_flips.h>
+#include <acute/ops/insert.h>
+#include <acute/ops/relocate.h>
+#include <acute/ops/remove.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace acute::detail {
+
+namespace {
+
+double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
+  const Point2 d = b - a;
+  const double l2 = d.squaredNorm();
+  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * d)).norm();
+}
+
+void restore_all(Mesh& sub) {
+  std::vector<EdgeHandle> queue;
+  for (auto eh : sub.edges())
+    if (!sub.status(eh).deleted()) queue.push_back(eh);
+  restore_delaunay(sub, queue);
+}
+
+/// Divides constrained, non-frozen edges longer than 1.5 h into equal pieces of about h.
+bool divide_segments(Mesh& sub, double h) {
+  std::vector<std::array<VertexHandle, 2>> long_edges;
+  for (auto eh : sub.edges()) {
+    if (sub.status(eh).deleted() || !is_constrained(sub, eh) || sub.data(eh).frozen) continue;
+    const auto heh = sub.halfedge_handle(eh, 0);
+    const VertexHandle a = sub.from_vertex_handle(heh), b = sub.to_vertex_handle(heh);
+    if ((point2(sub, b) - point2(sub, a)).norm() > 1.5 * h) long_edges.push_back({a, b});
+  }
+  bool changed = false;
+  for (const auto& [a, b] : long_edges) {
+    const Point2 pa = point2(sub, a), pb = point2(sub, b);
+    const int n = std::max(2, static_cast<int>(std::lround((pb - pa).norm() / h)));
+    VertexHandle from = a;
+    for (int k = 1; k < n; ++k) {
+      const auto heh = sub.find_halfedge(from, b);
+      if (!heh.is_valid()) break;
+      const VertexHandle m = split_edge(sub, sub.edge_handle(heh), pa + (static_cast<double>(k) / n) * (pb - pa));
+      if (!m.is_valid()) break;
+      from = m;
+      changed = true;
+    }
+  }
+  return changed;
+}
+
+/// Dart throwing inside the current triangles: candidates kept 0.7 h from every vertex and
+/// accepted point, and 0.35 h from every constrained or border edge.
+bool scatter_interior(Mesh& sub, double h, std::mt19937& rng) {
+  struct Dart {
+    Point2 p;
+    VertexHandle corner;  // a vertex of the triangle it was drawn in: the walk starts beside it
+  };
+  std::vector<Point2> taken;
+  for (auto vh : sub.vertices())
+    if (!sub.status(vh).deleted()) taken.push_back(point2(sub, vh));
+  std::vector<std::array<Point2, 2>> walls;
+  for (auto eh : sub.edges())
+    if (!sub.status(eh).deleted() && (is_constrained(sub, eh) || sub.is_boundary(eh))) {
+      const auto heh = sub.halfedge_handle(eh, 0);
+      walls.push_back({point2(sub, sub.from_vertex_handle(heh)), point2(sub, sub.to_vertex_handle(heh))});
+    }
+  const double cell = 0.5 * std::sqrt(3.0) * h * h;  // area per vertex of an equilateral mesh
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Dart> darts;
+  for (auto fh : sub.faces()) {
+    if (sub.status(fh).deleted()) continue;
+    const auto p = face_points(sub, fh);
+    const double area = 0.5 * std::abs(signed_area2(p[0], p[1], p[2]));
+    const int tries = 1 + static_cast<int>(4.0 * area / cell);
+    const VertexHandle corner = *sub.fv_range(fh).begin();
+    for (int t = 0; t < tries; ++t) {
+      double u = unit(rng), v = unit(rng);
+      if (u + v > 1) u = 1 - u, v = 1 - v;
+      const Point2 q = p[0] + u * (p[1] - p[0]) + v * (p[2] - p[0]);
+      bool ok = true;
+      for (const auto& w : taken) ok = ok && (q - w).norm() >= 0.7 * h;
+      for (const auto& w : walls) ok = ok && distance_to_segment(q, w[0], w[1]) >= 0.35 * h;
+      if (!ok) continue;
+      taken.push_back(q);
+      darts.push_back({q, corner});
+    }
+  }
+  bool changed = false;
+  for (const auto& d : darts)
+    for (auto fh : sub.vf_range(d.corner)) {
+      const VertexHandle vh = insert_point(sub, d.p, fh);
+      if (vh.is_valid()) {
+        changed = changed || !is_input(sub, vh);
+        break;
+      }
+    }
+  return changed;
+}
+
+/// Moves every free vertex to the area-weighted centroid of its star's triangle centroids.
+void lloyd_sweeps(Mesh& sub, int sweeps) {
+  std::vector<EdgeHandle> queue;
+  for (int s = 0; s < sweeps; ++s) {
+    for (auto vh : sub.vertices()) {
+      if (sub.status(vh).deleted() || sub.data(vh).kind != VertexKind::Free || sub.is_boundary(vh)) continue;
+      Point2 c(0, 0);
+      double weight = 0;
+      for (auto fh : sub.vf_range(vh)) {
+        const auto p = face_points(sub, fh);
+        const double a = std::abs(signed_area2(p[0], p[1], p[2]));
+        c += a * (p[0] + p[1] + p[2]) / 3.0;
+        weight += a;
+      }
+      if (!(weight > 0)) continue;
+      c /= weight;
+      if (can_relocate(sub, vh, c) != OpVerdict::Ok) continue;
+      relocate(sub, vh, c);
+      queue.clear();
+      push_star_edges(sub, vh, queue);
+      restore_delaunay(sub, queue);
+    }
+  }
+}
+
+/// The narrowest domain sector at vh between consecutive walls whose fan lies inside sub: the two
+/// wall halfedges (out of vh; the sector is counter-clockwise from first to second) and its angle.
+struct Sector {
+  HalfedgeHandle first, second;
+  double angle = INFINITY;
+};
+
+Sector narrowest_sector(const Mesh& sub, VertexHandle vh) {
+  Sector best;
+  const Point2 p = point2(sub, vh);
+  for (auto start : sub.voh_range(vh)) {
+    if (!is_constrained(sub, sub.edge_handle(start)) || sub.is_boundary(start)) continue;
+    double angle = 0;
+    HalfedgeHandle h = start;
+    bool closed = false;
+    for (int guard = 0; guard < 256; ++guard) {
+      const HalfedgeHandle back = sub.prev_halfedge_handle(h);  // ends at vh
+      const Point2 a = point2(sub, sub.to_vertex_handle(h)) - p, b = point2(sub, sub.from_vertex_handle(back)) - p;
+      angle += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+      h = sub.opposite_halfedge_handle(back);
+      if (sub.is_boundary(h) && !is_constrained(sub, sub.edge_handle(h))) break;  // frozen border: partial fan
+      if (is_constrained(sub, sub.edge_handle(h)) || h == start) {
+        closed = h != start;
+        break;
+      }
+    }
+    if (closed && angle < best.angle) best = Sector{start, h, angle};
+  }
+  return best;
+}
+
+}  // namespace
+
+bool rebuild_wedge(Mesh& sub, VertexHandle apex, int rings) {
+  if (rings < 3) return false;
+  constexpr double kPi = 3.14159265358979323846;
+  const Sector sector = narrowest_sector(sub, apex);
+  if (!(sector.angle < kPi / 3)) return false;
+  const Point2 c = point2(sub, apex);
+  const VertexHandle wall_end[2] = {sub.to_vertex_handle(sector.first), sub.to_vertex_handle(sector.second)};
+  const Point2 u[2] = {(point2(sub, wall_end[0]) - c).normalized(), (point2(sub, wall_end[1]) - c).normalized()};
+  // (A choice of vertices to remove, not a topological decision: the slack takes in the points
+  // of the walls, which rounding puts a hair to either side.)
+  auto in_sector = [&](const Point2& q) {
+    const Point2 d = q - c;
+    const double slack = 1e-9 * d.norm();
+    return u[0].x() * d.y() - u[0].y() * d.x() >= -slack && d.x() * u[1].y() - d.y() * u[1].x() >= -slack;
+  };
+  // Radius of the rebuilt part: short of the nearest vertex in the sector that stays.
+  double reach = INFINITY;
+  std::vector<VertexHandle> doomed;
+  for (auto vh : sub.vertices()) {
+    if (sub.status(vh).deleted() || vh == apex || !in_sector(point2(sub, vh))) continue;
+    if (is_input(sub, vh)) reach = std::min(reach, (point2(sub, vh) - c).norm());
+  }
+  if (!std::isfinite(reach)) return false;
+  for (auto vh : sub.vertices())
+    if (!sub.status(vh).deleted() && !is_input(sub, vh) && in_sector(point2(sub, vh)) && (point2(sub, vh) - c).norm() < reach)
+      doomed.push_back(vh);
+  if (doomed.empty()) return false;
+  for (int pass = 0; pass < 2; ++pass)
+    for (auto vh : doomed)
+      if (!sub.status(vh).deleted()) remove_vertex(sub, vh);
+  for (auto vh : doomed)
+    if (!sub.status(vh).deleted()) return false;  // something in the way: leave it to other candidates
+
+  // Radii: geometric, the last ring a step short of the reach.
+  const double half = 0.5 * sector.angle;
+  const double growth = 1.0 + 2.0 * std::sin(half) / std::sqrt(3.0);
+  std::vector<double> radius(static_cast<std::size_t>(rings));
+  radius.back() = reach / growth;
+  for (int k = rings - 2; k >= 0; --k) radius[static_cast<std::size_t>(k)] = radius[static_cast<std::size_t>(k) + 1] / growth;
+  // Wall points from the outermost inwards: each split shortens the wall edge at the apex.
+  for (int w = 0; w < 2; ++w)
+    for (int k = rings - 1; k >= 0; --k) {
+      HalfedgeHandle wall;
+      for (auto heh : sub.voh_range(apex))
+        if (is_constrained(sub, sub.edge_handle(heh)) && (point2(sub, sub.to_vertex_handle(heh)) - c).normalized().dot(u[w]) > 1 - 1e-12) wall = heh;
+      if (!wall.is_valid()) return false;
+      if ((point2(sub, sub.to_vertex_handle(wall)) - c).norm() <= radius[static_cast<std::size_t>(k)]) continue;
+      split_edge(sub, sub.edge_handle(wall), c + radius[static_cast<std::size_t>(k)] * u[w]);
+    }
+  // The middle row on the bisector, between consecutive rings.
+  const Point2 bisector = (u[0] + u[1]).normalized();
+  for (int k = 0; k + 1 < rings; ++k) {
+    const Point2 q = c + (0.5 * (radius[static_cast<std::size_t>(k)] + radius[static_cast<std::size_t>(k) + 1]) * std::cos(half)) * bisector;
+    for (auto fh : sub.vf_range(apex))
+      if (insert_point(sub, q, fh).is_valid()) break;
+  }
+  restore_all(sub);
+  return true;
+}
+
+double movable_edge_median(const Mesh& sub) {
+  std::vector<double> lengths;
+  for (auto eh : sub.edges()) {
+    if (sub.status(eh).deleted()) continue;
+    const auto heh = sub.halfedge_handle(eh, 0);
+    const VertexHandle a = sub.from_vertex_handle(heh), b = sub.to_vertex_handle(heh);
+    if (is_input(sub, a) && is_input(sub, b)) continue;
+    lengths.push_back((point2(sub, b) - point2(sub, a)).norm());
+  }
+  if (lengths.empty()) return 0;
+  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+bool remesh_region(Mesh& sub, double h, std::uint32_t seed) {
+  if (!(h > 0)) return false;
+  bool removed = false;
+  for (int pass = 0; pass < 2; ++pass)
+    for (auto vh : sub.vertices())
+      if (!sub.status(vh).deleted() && !is_input(sub, vh)) removed = remove_vertex(sub, vh) || removed;
+  if (!removed) return false;
+  std::mt19937 rng(seed);
+  divide_segments(sub, h);
+  scatter_interior(sub, h, rng);
+  restore_all(sub);
+  lloyd_sweeps(sub, 4);
+  return true;
+}
+
+}  // namespace acute::detail

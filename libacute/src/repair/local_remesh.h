@@ -1,0 +1,32 @@
+// Private to the repair layer: re-sampling a region copy from scratch. Where no single local
+// operation improves a stubborn cluster (the one-triangle-wide strip of a sharp wedge, a segment
+// vertex left with two right triangles), a fresh arrangement of the region's movable vertices at
+// the local spacing often does; the repair keeps it only when it scores better.
+#pragma once
+
+#include <acute/mesh/mesh.h>
+
+#include <cstdint>
+
+namespace acute::detail {
+
+/// Removes the movable vertices of `sub` (everything not Input; the frozen ring of a region copy is
+/// Input), divides its constrained non-frozen edges evenly at spacing h, scatters interior points at
+/// spacing about h (randomised by seed, kept h * 0.7 from vertices and h * 0.35 from segments),
+/// then a few Lloyd sweeps with Delaunay restoration. Returns false when nothing could be removed
+/// or added (sub then unchanged or merely re-triangulated).
+bool remesh_region(Mesh& sub, double h, std::uint32_t seed);
+
+/// Rebuilds the sharp corner at `apex` (an Input vertex of sub whose domain sector between two
+/// consecutive walls is narrower than 60 degrees and lies wholly inside sub): the movable vertices in
+/// the sector closer than the nearest fixed one are removed, and the sector is refilled with a
+/// graded strip two rows wide: points at radii r_1 < ... < r_K (K = rings >= 3) on both walls (r_{k+1} = r_k (1 +
+/// 2 sin(theta/2) / sqrt 3), the side of equilateral triangles two rows across) and a middle row on
+/// the bisector between consecutive radii. The apex triangle is isosceles, and every base vertex
+/// gets three triangles. Returns false when there is no such sector or nothing was rebuilt.
+bool rebuild_wedge(Mesh& sub, VertexHandle apex, int rings);
+
+/// Median length of the edges at movable (non-Input) vertices of sub; 0 when there are none.
+double movable_edge_median(const Mesh& sub);
+
+}  // namespace acute::detail

@@ -1,0 +1,133 @@
+#include <acute/mesh/geometry.h>
+#include <acute/mesher.h>
+#include <acute/repair/angle_bounds.h>
+
+#include "repair/local_remesh.h"
+#include "repair/region.h"
+#include "support/mesh_verify.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace acute {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Point2 polar(double r, double deg) { return Point2(r * std::cos(deg * kPi / 180), r * std::sin(deg * kPi / 180)); }
+
+/// A triangle with a sharp apex at the origin (apex angle in degrees), legs of length 10.
+Domain sharp_wedge(double apex_deg) {
+  Domain d;
+  d.points = {Point2(0, 0), polar(10, 0), polar(10, apex_deg)};
+  d.segments = {{0, 1}, {1, 2}, {2, 0}};
+  return d;
+}
+
+Mesh cvt_mesh(const Domain& domain, std::size_t vertices) {
+  MeshOptions options;
+  options.method = Method::Cvt;
+  options.target_vertices = vertices;
+  return generate_mesh(domain, options).mesh;
+}
+
+VertexHandle vertex_at(const Mesh& mesh, const Point2& p) {
+  for (auto vh : mesh.vertices())
+    if (!mesh.status(vh).deleted() && point2(mesh, vh) == p) return vh;
+  return VertexHandle();
+}
+
+/// The region of every vertex closer than r to p.
+detail::Region region_near(const Mesh& mesh, const Point2& p, double r) {
+  std::vector<VertexHandle> movable;
+  for (auto vh : mesh.vertices())
+    if ((point2(mesh, vh) - p).norm() < r) movable.push_back(vh);
+  detail::Region region;
+  EXPECT_TRUE(detail::extract_region(mesh, movable, forced_corner_vertices(mesh, 30), region));
+  return region;
+}
+
+std::size_t triangles_at(const Mesh& mesh, VertexHandle vh) {
+  std::size_t n = 0;
+  for (auto fh : mesh.vf_range(vh)) n += fh.is_valid();
+  return n;
+}
+
+TEST(RebuildWedge, sharp_apex_gets_an_isosceles_triangle_and_three_triangles_at_its_base) {
+  for (double apex_deg : {12.0, 20.0, 45.0}) {
+    SCOPED_TRACE(apex_deg);
+    Mesh mesh = cvt_mesh(sharp_wedge(apex_deg), 300);
+    const double area = test::total_area(mesh);
+    detail::Region region = region_near(mesh, Point2(0, 0), 3.0);
+    Mesh sub = region.sub;
+    const VertexHandle apex = vertex_at(sub, Point2(0, 0));
+    ASSERT_TRUE(apex.is_valid());
+    ASSERT_TRUE(detail::rebuild_wedge(sub, apex, 3));
+    // One triangle at the apex; its base vertices are equally far and each has three triangles.
+    ASSERT_EQ(triangles_at(sub, apex), 1u);
+    const FaceHandle apex_face = *sub.vf_range(apex).begin();
+    std::vector<VertexHandle> base;
+    for (auto vh : sub.fv_range(apex_face))
+      if (vh != apex) base.push_back(vh);
+    ASSERT_EQ(base.size(), 2u);
+    const double r0 = point2(sub, base[0]).norm(), r1 = point2(sub, base[1]).norm();
+    EXPECT_NEAR(r0, r1, 1e-12 * r0);
+    for (auto vh : base) EXPECT_EQ(triangles_at(sub, vh), 3u);
+    detail::commit_region(mesh, region, sub);
+    mesh.garbage_collection();
+    EXPECT_MESH_VALID(mesh);
+    EXPECT_EQ(detail::constraint_violation(mesh), "");
+    EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
+  }
+}
+
+TEST(RebuildWedge, wide_corner_is_left_alone) {
+  Domain square;
+  square.points = {Point2(0, 0), Point2(4, 0), Point2(4, 4), Point2(0, 4)};
+  square.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  Mesh mesh = cvt_mesh(square, 200);
+  detail::Region region = region_near(mesh, Point2(0, 0), 1.5);
+  Mesh sub = region.sub;
+  const VertexHandle corner = vertex_at(sub, Point2(0, 0));
+  ASSERT_TRUE(corner.is_valid());
+  EXPECT_FALSE(detail::rebuild_wedge(sub, corner, 3));
+}
+
+TEST(RemeshRegion, resampled_region_stays_valid_and_conforming) {
+  Domain d;
+  d.points = {Point2(0, 0), Point2(4, 0), Point2(4, 4), Point2(0, 4), Point2(1, 2), Point2(3, 2.5)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}};  // an interior segment crosses the region
+  Mesh mesh = cvt_mesh(d, 400);
+  const double area = test::total_area(mesh);
+  detail::Region region = region_near(mesh, Point2(2, 2.25), 1.2);
+  for (double scale : {1.0, 0.65}) {
+    Mesh sub = region.sub;
+    const double h = detail::movable_edge_median(sub);
+    ASSERT_GT(h, 0);
+    ASSERT_TRUE(detail::remesh_region(sub, scale * h, 7));
+    Mesh big = mesh;
+    detail::commit_region(big, region, sub);
+    big.garbage_collection();
+    EXPECT_MESH_VALID(big);
+    EXPECT_EQ(detail::constraint_violation(big), "");
+    EXPECT_NEAR(test::total_area(big), area, 1e-12 * area);
+    // Re-sampled at about the same spacing: the vertex count stays in proportion.
+    EXPECT_LT(big.n_vertices(), mesh.n_vertices() * 3 / 2);
+  }
+}
+
+TEST(RepairAcute, sharp_wedges_meet_the_bounds) {
+  for (double apex_deg : {8.0, 15.0, 25.0}) {
+    SCOPED_TRACE(apex_deg);
+    MeshOptions options;
+    options.target_vertices = 400;
+    options.time_limit_s = 60;
+    const MeshResult result = generate_mesh(sharp_wedge(apex_deg), options);
+    EXPECT_EQ(result.status, MeshStatus::Ok);
+    EXPECT_MESH_VALID(result.mesh);
+  }
+}
+
+}  // namespace
+}  // namespace acute
