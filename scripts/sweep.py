@@ -16,7 +16,7 @@ MESHCHECK = os.environ.get("MESHCHECK") or os.path.join(HERE, "..", "..", "share
 def run_one(args, domain):
     name = os.path.splitext(os.path.basename(domain))[0]
     out = os.path.join(args.out, f"{name}_{args.method}.off")
-    cmd = [args.acute, "mesh", domain, "-o", out, "--method", args.method, "-q",
+    cmd = [args.acute, "mesh", domain, "-o", out, "--method", args.method, "-q", "--json",
            "--min-angle", str(args.min_angle), "--max-angle", str(args.max_angle), "--seed", str(args.seed)]
     if args.vertices: cmd += ["--vertices", str(args.vertices)]
     if args.size: cmd += ["--size", str(args.size)]
@@ -30,6 +30,10 @@ def run_one(args, domain):
         rc, err = "timeout", ["timeout"]
     secs = time.time() - t0
     row = dict(domain=name, rc=rc, secs=secs, err=err[0] if err else "")
+    try:
+        row["start"] = json.loads(p.stdout).get("n_vertices_start")
+    except (json.JSONDecodeError, NameError, AttributeError):
+        pass
     if rc not in (0, 1) or not os.path.exists(out):
         return row
     mc = [sys.executable, args.meshcheck, out, "--domain", domain, "--tolerance", "1e-10", "--json",
@@ -69,17 +73,19 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     with ThreadPoolExecutor(args.jobs) as ex:
         rows = list(ex.map(lambda d: run_one(args, d), args.domains))
-    print("| domain | exit | meshcheck | V | T | min | free min | max | obtuse | right | below min (free) | s |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| domain | exit | meshcheck | start V | V | T | min | free min | max | obtuse | right | below min (free) | s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     ok = invalid = 0
     f = lambda x, d=3: "-" if x is None else (f"{x:.{d}f}" if isinstance(x, float) else str(x))
     for r in rows:
-        print(f"| {r['domain']} | {r['rc']} | {r.get('meshcheck', '-')} | {f(r.get('nv'))} | {f(r.get('nt'))} | {f(r.get('min'))} | "
+        print(f"| {r['domain']} | {r['rc']} | {r.get('meshcheck', '-')} | {f(r.get('start'))} | {f(r.get('nv'))} | {f(r.get('nt'))} | {f(r.get('min'))} | "
               f"{f(r.get('free_min'))} | {f(r.get('max'))} | {f(r.get('obtuse'))} | {f(r.get('right'))} | {f(r.get('below'))} | {r['secs']:.2f} |"
               + (f" {r['err']}" if r.get("meshcheck") is None else ""))
         ok += r.get("meshcheck") == 0
         invalid += r.get("meshcheck") not in (0, 1)
-    print(f"\nsweep: {ok} of {len(rows)} meet the bounds; {invalid} invalid or failed runs")
+    growth = [r["nv"] / r["start"] for r in rows if r.get("start") and r.get("nv")]
+    print(f"\nsweep: {ok} of {len(rows)} meet the bounds; {invalid} invalid or failed runs"
+          + (f"; vertices / start: max {max(growth):.3f}" if growth else ""))
     return 1 if invalid else 0
 
 

@@ -206,7 +206,9 @@ void repair_shared_meshes(bool require_bounds) {
     o.time_limit_s = 20;
     const RepairMeshResult r = repair_mesh(in, o);
     EXPECT_EQ(conforms(in, r.mesh, false), "") << name;
-    if (require_bounds) EXPECT_EQ(r.n_bad, 0u) << name << ": bounds not met, angles " << r.min_angle_deg << ".." << r.max_angle_deg;
+    if (require_bounds) {
+      EXPECT_EQ(r.n_bad, 0u) << name << ": bounds not met, angles " << r.min_angle_deg << ".." << r.max_angle_deg;
+    }
     ++n;
   }
   EXPECT_GE(n, 5) << "meshes repaired from " << dir;

@@ -99,7 +99,9 @@ TEST(Repair, never_fails_the_budget_contract) {
   const MeshResult result = generate_mesh(d, options);
   EXPECT_MESH_VALID(result.mesh);
   EXPECT_EQ(detail::constraint_violation(result.mesh), "");
-  if (result.status != MeshStatus::Ok) EXPECT_FALSE(result.remaining.empty());
+  if (result.status != MeshStatus::Ok) {
+    EXPECT_FALSE(result.remaining.empty());
+  }
 }
 
 }  // namespace

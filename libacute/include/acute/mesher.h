@@ -62,6 +62,7 @@ struct MeshResult {
   Mesh mesh;
   MeshStatus status = MeshStatus::NotApplicable;
   int iterations = 0;
+  std::size_t start_vertices = 0;      ///< vertices of the start mesh (e.g. the CVT) the repair began from
   std::vector<BadTriangle> remaining;  ///< bad triangles left (first 100)
   CdtStats cdt;
   std::vector<std::string> notes;      ///< warnings and remarks for the user

@@ -123,6 +123,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
         refine(result.mesh, rp);
       }
       if (options.method == Method::Cvt) break;
+      result.start_vertices = result.mesh.n_vertices();
       notify("repair");
       RepairParams params;
       params.bounds.min_deg = options.min_angle_deg;

@@ -129,15 +129,15 @@ void lloyd_sweeps(Mesh& sub, int sweeps) {
   }
 }
 
-/// The narrowest domain sector at vh between consecutive walls whose fan lies inside sub: the two
-/// wall halfedges (out of vh; the sector is counter-clockwise from first to second) and its angle.
+/// A domain sector at a vertex between consecutive walls, counter-clockwise from u[0] to u[1].
 struct Sector {
-  HalfedgeHandle first, second;
-  double angle = INFINITY;
+  Point2 u[2];
+  double angle = 0;
 };
 
-Sector narrowest_sector(const Mesh& sub, VertexHandle vh) {
-  Sector best;
+/// The sectors at vh narrower than max_angle (radians) whose fan lies wholly inside sub.
+std::vector<Sector> narrow_sectors(const Mesh& sub, VertexHandle vh, double max_angle) {
+  std::vector<Sector> out;
   const Point2 p = point2(sub, vh);
   for (auto start : sub.voh_range(vh)) {
     if (!is_constrained(sub, sub.edge_handle(start)) || sub.is_boundary(start)) continue;
@@ -155,21 +155,35 @@ Sector narrowest_sector(const Mesh& sub, VertexHandle vh) {
         break;
       }
     }
-    if (closed && angle < best.angle) best = Sector{start, h, angle};
+    if (closed && angle < max_angle)
+      out.push_back(Sector{{(point2(sub, sub.to_vertex_handle(start)) - p).normalized(), (point2(sub, sub.to_vertex_handle(h)) - p).normalized()}, angle});
   }
-  return best;
+  return out;
 }
+
+/// rebuild_wedge for one sector.
+bool rebuild_sector(Mesh& sub, VertexHandle apex, const Sector& sector, int rings);
 
 }  // namespace
 
 bool rebuild_wedge(Mesh& sub, VertexHandle apex, int rings) {
-  if (rings < 3) return false;
   constexpr double kPi = 3.14159265358979323846;
-  const Sector sector = narrowest_sector(sub, apex);
-  if (!(sector.angle < kPi / 3)) return false;
+  if (rings < 3) return false;
+  bool rebuilt = false;
+  for (const Sector& sector : narrow_sectors(sub, apex, kPi / 3)) rebuilt = rebuild_sector(sub, apex, sector, rings) || rebuilt;
+  return rebuilt;
+}
+
+bool has_narrow_sector(const Mesh& sub, VertexHandle vh) {
+  constexpr double kPi = 3.14159265358979323846;
+  return is_input(sub, vh) && !narrow_sectors(sub, vh, kPi / 3).empty();
+}
+
+namespace {
+
+bool rebuild_sector(Mesh& sub, VertexHandle apex, const Sector& sector, int rings) {
   const Point2 c = point2(sub, apex);
-  const VertexHandle wall_end[2] = {sub.to_vertex_handle(sector.first), sub.to_vertex_handle(sector.second)};
-  const Point2 u[2] = {(point2(sub, wall_end[0]) - c).normalized(), (point2(sub, wall_end[1]) - c).normalized()};
+  const Point2* u = sector.u;
   // (A choice of vertices to remove, not a topological decision: the slack takes in the points
   // of the walls, which rounding puts a hair to either side.)
   auto in_sector = [&](const Point2& q) {
@@ -221,6 +235,8 @@ bool rebuild_wedge(Mesh& sub, VertexHandle apex, int rings) {
   restore_all(sub);
   return true;
 }
+
+}  // namespace
 
 double movable_edge_median(const Mesh& sub) {
   std::vector<double> lengths;

@@ -26,6 +26,9 @@ bool remesh_region(Mesh& sub, double h, std::uint32_t seed);
 /// gets three triangles. Returns false when there is no such sector or nothing was rebuilt.
 bool rebuild_wedge(Mesh& sub, VertexHandle apex, int rings);
 
+/// Whether vh has a sector rebuild_wedge would rebuild (narrower than 60 degrees, wholly in sub).
+bool has_narrow_sector(const Mesh& sub, VertexHandle vh);
+
 /// Median length of the edges at movable (non-Input) vertices of sub; 0 when there are none.
 double movable_edge_median(const Mesh& sub);
 

@@ -33,6 +33,10 @@ std::vector<FaceHandle> bad_triangles(const Mesh& mesh, const AngleBounds& bound
 
 namespace {
 
+/// Iterations without a new best before giving up: stuck clusters get fresh random re-samplings
+/// every iteration, so persistence pays (the time limit still bounds the run).
+constexpr int kStagnationLimit = 150;
+
 class Repairer {
  public:
   Repairer(Mesh& mesh, const RepairParams& params) : mesh_(mesh), params_(params), bounds_(params.bounds) {}
@@ -67,7 +71,7 @@ class Repairer {
         result_.status = RepairStatus::Converged;
         break;
       }
-      if (it >= params_.max_iterations || stagnation > 60) {
+      if (it >= params_.max_iterations || stagnation > kStagnationLimit) {
         result_.status = RepairStatus::IterationLimit;
         break;
       }
@@ -202,17 +206,21 @@ class Repairer {
     }
   }
 
-  /// Lexicographic: fewer infeasible vertices (whose angle sum cannot be shared among their
-  /// triangles within the bounds: no relocation can fix them), then fewer bad triangles, then a
-  /// larger worst margin.
+  /// Lower is better: infeasible vertices (whose angle sum cannot be shared among their triangles
+  /// within the bounds: no relocation can fix them), each weighted as several bad triangles, plus
+  /// the badness of the bad triangles; ties go to the larger worst margin.
   struct Score {
+    static constexpr double kInfeasibleWeight = 6.0;
     std::size_t infeasible = 0;
     std::size_t bad = 0;
     double badness = 0;  ///< sum over bad triangles of 1 + violation / 5 degrees: severity counts too
     double worst = INFINITY;
     bool operator<(const Score& o) const {
-      if (infeasible != o.infeasible) return infeasible < o.infeasible;
-      if (std::abs(badness - o.badness) > 1e-9) return badness < o.badness;
+      // An infeasible vertex weighs as much as a few bad triangles: an edit that removes one but
+      // leaves dozens of new bad triangles behind is no progress.
+      const double mine = kInfeasibleWeight * static_cast<double>(infeasible) + badness;
+      const double theirs = kInfeasibleWeight * static_cast<double>(o.infeasible) + o.badness;
+      if (std::abs(mine - theirs) > 1e-9) return mine < theirs;
       return worst > o.worst + 1e-9;
     }
   };
@@ -531,8 +539,15 @@ class Repairer {
 
     // A sharp corner of the worst face rebuilt as a graded two-row strip (see rebuild_wedge).
     joint_first = true;
-    for (auto vh : v)
-      if (is_input(sub0, vh))
+    std::vector<VertexHandle> apexes;  // of the worst face, or next to it (the apex triangle's neighbour)
+    for (auto vh : v) {
+      apexes.push_back(vh);
+      for (auto w : sub0.vv_range(vh)) apexes.push_back(w);
+    }
+    std::sort(apexes.begin(), apexes.end());
+    apexes.erase(std::unique(apexes.begin(), apexes.end()), apexes.end());
+    for (auto vh : apexes)
+      if (detail::has_narrow_sector(sub0, vh))
         for (int rings : {3, 5}) attempt([&, vh, rings](Mesh& sub) { return detail::rebuild_wedge(sub, vh, rings); });
     joint_first = false;
 
