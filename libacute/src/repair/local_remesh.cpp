@@ -184,6 +184,38 @@ namespace {
 bool rebuild_sector(Mesh& sub, VertexHandle apex, const Sector& sector, int rings) {
   const Point2 c = point2(sub, apex);
   const Point2* u = sector.u;
+  auto wall_at_apex = [&](int w) {
+    HalfedgeHandle wall;
+    for (auto heh : sub.voh_range(apex))
+      if (is_constrained(sub, sub.edge_handle(heh)) && (point2(sub, sub.to_vertex_handle(heh)) - c).normalized().dot(u[w]) > 1 - 1e-12) wall = heh;
+    return wall;
+  };
+  // A wall with faces on both sides (an interior segment) keeps its vertices: removing them would
+  // coarsen the other side. The rings then sit at their radii.
+  std::vector<VertexHandle> kept;
+  int interior_wall = -1;
+  for (int w = 0; w < 2; ++w) {
+    const HalfedgeHandle h = wall_at_apex(w);
+    if (!h.is_valid()) return false;
+    if (sub.is_boundary(h) || sub.is_boundary(sub.opposite_halfedge_handle(h))) continue;
+    if (interior_wall >= 0) return false;  // two interior walls: not rebuilt
+    interior_wall = w;
+    // Walk the wall outwards while its vertices are movable.
+    HalfedgeHandle step = h;
+    for (int guard = 0; guard < 1024; ++guard) {
+      const VertexHandle x = sub.to_vertex_handle(step);
+      if (is_input(sub, x)) break;
+      kept.push_back(x);
+      HalfedgeHandle next;
+      for (auto heh : sub.voh_range(x))
+        if (heh != sub.opposite_halfedge_handle(step) && is_constrained(sub, sub.edge_handle(heh)) &&
+            sub.data(sub.edge_handle(heh)).segment == sub.data(sub.edge_handle(step)).segment)
+          next = heh;
+      if (!next.is_valid()) break;
+      step = next;
+    }
+  }
+  auto is_kept = [&](VertexHandle vh) { return std::find(kept.begin(), kept.end(), vh) != kept.end(); };
   // (A choice of vertices to remove, not a topological decision: the slack takes in the points
   // of the walls, which rounding puts a hair to either side.)
   auto in_sector = [&](const Point2& q) {
@@ -193,14 +225,30 @@ bool rebuild_sector(Mesh& sub, VertexHandle apex, const Sector& sector, int ring
   };
   // Radius of the rebuilt part: short of the nearest vertex in the sector that stays.
   double reach = INFINITY;
-  std::vector<VertexHandle> doomed;
   for (auto vh : sub.vertices()) {
     if (sub.status(vh).deleted() || vh == apex || !in_sector(point2(sub, vh))) continue;
     if (is_input(sub, vh)) reach = std::min(reach, (point2(sub, vh) - c).norm());
   }
   if (!std::isfinite(reach)) return false;
+  std::vector<double> radius;
+  const double half = 0.5 * sector.angle;
+  if (interior_wall >= 0) {
+    for (auto vh : kept) {
+      const double r = (point2(sub, vh) - c).norm();
+      if (r < reach) radius.push_back(r);
+    }
+    std::sort(radius.begin(), radius.end());
+    if (radius.size() < 2) return false;
+  } else {
+    // Geometric radii, the last ring a step short of the reach.
+    const double growth = 1.0 + 2.0 * std::sin(half) / std::sqrt(3.0);
+    radius.resize(static_cast<std::size_t>(rings));
+    radius.back() = reach / growth;
+    for (int k = rings - 2; k >= 0; --k) radius[static_cast<std::size_t>(k)] = radius[static_cast<std::size_t>(k) + 1] / growth;
+  }
+  std::vector<VertexHandle> doomed;
   for (auto vh : sub.vertices())
-    if (!sub.status(vh).deleted() && !is_input(sub, vh) && in_sector(point2(sub, vh)) && (point2(sub, vh) - c).norm() < reach)
+    if (!sub.status(vh).deleted() && !is_input(sub, vh) && !is_kept(vh) && in_sector(point2(sub, vh)) && (point2(sub, vh) - c).norm() < reach)
       doomed.push_back(vh);
   if (doomed.empty()) return false;
   for (int pass = 0; pass < 2; ++pass)
@@ -209,26 +257,20 @@ bool rebuild_sector(Mesh& sub, VertexHandle apex, const Sector& sector, int ring
   for (auto vh : doomed)
     if (!sub.status(vh).deleted()) return false;  // something in the way: leave it to other candidates
 
-  // Radii: geometric, the last ring a step short of the reach.
-  const double half = 0.5 * sector.angle;
-  const double growth = 1.0 + 2.0 * std::sin(half) / std::sqrt(3.0);
-  std::vector<double> radius(static_cast<std::size_t>(rings));
-  radius.back() = reach / growth;
-  for (int k = rings - 2; k >= 0; --k) radius[static_cast<std::size_t>(k)] = radius[static_cast<std::size_t>(k) + 1] / growth;
   // Wall points from the outermost inwards: each split shortens the wall edge at the apex.
-  for (int w = 0; w < 2; ++w)
-    for (int k = rings - 1; k >= 0; --k) {
-      HalfedgeHandle wall;
-      for (auto heh : sub.voh_range(apex))
-        if (is_constrained(sub, sub.edge_handle(heh)) && (point2(sub, sub.to_vertex_handle(heh)) - c).normalized().dot(u[w]) > 1 - 1e-12) wall = heh;
+  for (int w = 0; w < 2; ++w) {
+    if (w == interior_wall) continue;
+    for (std::size_t k = radius.size(); k-- > 0;) {
+      const HalfedgeHandle wall = wall_at_apex(w);
       if (!wall.is_valid()) return false;
-      if ((point2(sub, sub.to_vertex_handle(wall)) - c).norm() <= radius[static_cast<std::size_t>(k)]) continue;
-      split_edge(sub, sub.edge_handle(wall), c + radius[static_cast<std::size_t>(k)] * u[w]);
+      if ((point2(sub, sub.to_vertex_handle(wall)) - c).norm() <= radius[k]) continue;
+      split_edge(sub, sub.edge_handle(wall), c + radius[k] * u[w]);
     }
+  }
   // The middle row on the bisector, between consecutive rings.
   const Point2 bisector = (u[0] + u[1]).normalized();
-  for (int k = 0; k + 1 < rings; ++k) {
-    const Point2 q = c + (0.5 * (radius[static_cast<std::size_t>(k)] + radius[static_cast<std::size_t>(k) + 1]) * std::cos(half)) * bisector;
+  for (std::size_t k = 0; k + 1 < radius.size(); ++k) {
+    const Point2 q = c + (0.5 * (radius[k] + radius[k + 1]) * std::cos(half)) * bisector;
     for (auto fh : sub.vf_range(apex))
       if (insert_point(sub, q, fh).is_valid()) break;
   }
