@@ -94,13 +94,15 @@ void split_with_vertex(Mesh& mesh, EdgeHandle eh, VertexHandle vh) {
 }
 
 /// A point on a segment piece must lie strictly between its ends in each coordinate the segment
-/// varies in (see strictly_between_along); true for edges that are not on a segment.
+/// varies in (see strictly_between_along) and close enough to the segment's exact line to be read
+/// back as one of its points (close_enough_to_line); true for edges that are not on a segment.
 bool splits_in_order(const Mesh& mesh, EdgeHandle eh, const Point2& p) {
   const int seg = mesh.data(eh).segment;
   if (seg < 0 || static_cast<std::size_t>(seg) >= segment_table(mesh).size()) return true;
   const auto h0 = mesh.halfedge_handle(eh, 0);
-  return strictly_between_along(segment_endpoints(mesh, seg), point2(mesh, mesh.from_vertex_handle(h0)), p,
-                                point2(mesh, mesh.to_vertex_handle(h0)));
+  const auto& ends = segment_endpoints(mesh, seg);
+  return strictly_between_along(ends, point2(mesh, mesh.from_vertex_handle(h0)), p, point2(mesh, mesh.to_vertex_handle(h0))) &&
+         close_enough_to_line(ends, p);
 }
 
 VertexHandle restore_around(Mesh& mesh, VertexHandle vh) {
@@ -152,8 +154,8 @@ VertexHandle split_edge(Mesh& mesh, EdgeHandle eh, const Point2& p_in) {
     const Point2 lo = point2(mesh, mesh.from_vertex_handle(h0)), hi = point2(mesh, mesh.to_vertex_handle(h0));
     const auto& ends = segment_endpoints(mesh, seg);
     p = project_on_line(ends, p_in, &lo, &hi);
-    // No double strictly between the piece's ends along the segment: the piece is as short as
-    // rounding allows, another point would not read back as a point of the segment.
+    // No double strictly between the piece's ends along the segment and near enough its line: the
+    // piece is as short as rounding allows, another point would not read back as the segment's.
     if (!splits_in_order(mesh, eh, p)) return VertexHandle();
   }
   // The new triangles (v0, p, x) and (p, v1, x) for each side x must be counter-clockwise.

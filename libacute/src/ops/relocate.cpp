@@ -1,5 +1,6 @@
 #include <acute/ops/relocate.h>
 
+#include <acute/mesh/segments.h>
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
@@ -27,7 +28,12 @@ OpVerdict can_relocate(const Mesh& mesh, VertexHandle vh, const Point2& p) {
   const auto& data = mesh.data(vh);
   if (data.kind == VertexKind::Input) return OpVerdict::InputVertex;
   if (!std::isfinite(p.x()) || !std::isfinite(p.y())) return OpVerdict::WouldInvert;
-  if (data.kind == VertexKind::OnSegment && !keeps_segment_order(mesh, vh, p)) return OpVerdict::OffSegment;
+  if (data.kind == VertexKind::OnSegment) {
+    if (!keeps_segment_order(mesh, vh, p)) return OpVerdict::OffSegment;
+    if (data.segment >= 0 && static_cast<std::size_t>(data.segment) < segment_table(mesh).size() &&
+        !close_enough_to_line(segment_endpoints(mesh, data.segment), p))
+      return OpVerdict::OffSegment;
+  }
   for (auto heh : mesh.voh_range(vh)) {
     if (mesh.is_boundary(heh)) continue;
     const Point2 b = point2(mesh, mesh.to_vertex_handle(heh));

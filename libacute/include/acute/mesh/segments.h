@@ -40,7 +40,16 @@ bool strictly_between_along(const std::array<Point2, 2>& ends, const Point2& lo,
 /// Distance of p from the line through ends divided by the segment length (exact, rounded once).
 double line_deviation(const std::array<Point2, 2>& ends, const Point2& p);
 
-/// A point of doubles at most 2048 ulps (along the dominant axis) from q (q itself when it is already within 2^-42 of
+/// The largest line_deviation of a point placed on a segment (2^-34 ~ 5.8e-11, a 1.7x margin under
+/// the 1e-10 a referee allows for rounded coordinates). On a segment too short for its distance
+/// from the origin (1e-7 long at 1e3: an ulp is 1e-6 of it) only a few doubles come that close;
+/// splits and moves elsewhere are refused, so the segment keeps fewer Steiner points.
+constexpr double kMaxSegmentDeviation = 0x1p-34;
+
+/// line_deviation(ends, p) <= kMaxSegmentDeviation.
+bool close_enough_to_line(const std::array<Point2, 2>& ends, const Point2& p);
+
+/// A point of doubles at most 4096 ulps (along the dominant axis) or 1/64 of the segment from q (q itself when it is already within 2^-42 of
 /// the segment length of the line) that minimises line_deviation: rounding a point of a short
 /// segment far from the origin (1e-5 long at 1e3) puts it ~1e-9 of the length off the line, which
 /// is visible as a gap or overlap; among the nearby doubles some are 100x closer.
