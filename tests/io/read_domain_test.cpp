@@ -203,3 +203,18 @@ TEST(ReadDomain, hole_seed_avoids_an_island_inside_the_hole) {
     inside += predicates::orient2d(tri[i], tri[(i + 1) % 3], s) != Sign::Negative;
   EXPECT_LT(inside, 3) << path << ": seed " << s.transpose() << " is in the island";
 }
+
+// --split-crossings must be reachable from a file: the reader lets crossing segments through
+// when asked (the CDT splits them), and rejects them otherwise.
+TEST(ReadDomain, crossing_segments_pass_only_when_allowed) {
+  const std::string path = acute::test::output("crossing_x.poly");
+  {
+    std::ofstream f(path);
+    f << "4 2 0 0\n1 0 0\n2 2 2\n3 0 2\n4 2 0\n2 0\n1 1 2\n2 3 4\n0\n";
+  }
+  EXPECT_THROW(io::read_domain(path), InvalidInput);
+  io::ReadOptions options;
+  options.allow_crossing_segments = true;
+  const Domain d = io::read_domain(path, {}, options);
+  EXPECT_EQ(d.segments.size(), 2u);
+}

@@ -3,6 +3,7 @@ acute_add_test(mesh_tests
     mesh/mesh_test.cpp
     mesh/check_test.cpp
     mesh/quality_test.cpp
+    mesh/segments_test.cpp
   LIBS acute_mesh)
 acute_add_test(mesh_dual_tests
   SOURCES

@@ -3,4 +3,6 @@ acute_add_test(pipeline_tests
     pipeline/repair_mesh_test.cpp
     pipeline/cgshop_solution_test.cpp
     pipeline/random_polygons_test.cpp
+    pipeline/segment_rounding_test.cpp
+    pipeline/resource_bounds_test.cpp
   LIBS acute_pipeline acute_io nlohmann_json::nlohmann_json)

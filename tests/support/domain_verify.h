@@ -5,9 +5,12 @@
 #include <acute/core/domain.h>
 #include <acute/mesh/check.h>
 #include <acute/mesh/mesh.h>
+#include <acute/predicates/predicates.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -65,6 +68,51 @@ inline std::string verify_conforms(const Mesh& mesh, const Domain& domain, doubl
     mesh_area += 0.5 * ((p[1] - p[0]).x() * (p[2] - p[0]).y() - (p[1] - p[0]).y() * (p[2] - p[0]).x());
   }
   if (std::abs(mesh_area - area) > 1e-9 * area) return "area " + std::to_string(mesh_area) + " instead of " + std::to_string(area);
+  return {};
+}
+
+inline std::string point_text(const Point2& p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x(), p.y());
+  return buf;
+}
+
+/// Empty when every input segment ab is read back from the mesh as the referee reads it
+/// (shared/tools/meshcheck --tolerance tol): a chain of mesh edges from a to b whose vertices each
+/// lie within tol * |ab| of the line ab (exact distance, rounded once), inside the bounding box
+/// of ab, and advance strictly toward
+/// b in x (in y when a.x == b.x) without passing it. Else the first segment that is not.
+inline std::string verify_segment_chains(const Mesh& mesh, const Domain& domain, double tol = 1e-10) {
+  std::map<std::pair<double, double>, VertexHandle> at;
+  for (auto vh : mesh.vertices()) at[{mesh.point(vh)[0], mesh.point(vh)[1]}] = vh;
+  for (std::size_t s = 0; s < domain.segments.size(); ++s) {
+    const Point2& a = domain.points[static_cast<std::size_t>(domain.segments[s][0])];
+    const Point2& b = domain.points[static_cast<std::size_t>(domain.segments[s][1])];
+    const auto ia = at.find({a.x(), a.y()}), ib = at.find({b.x(), b.y()});
+    if (ia == at.end() || ib == at.end()) return "segment " + std::to_string(s) + ": an endpoint is not a vertex";
+    const int axis = a.x() != b.x() ? 0 : 1;
+    const bool up = b[axis] > a[axis];
+    const double l2 = (b - a).squaredNorm();
+    VertexHandle cur = ia->second;
+    for (std::size_t steps = 0; cur != ib->second; ++steps) {
+      const double c = point2(mesh, cur)[axis];
+      VertexHandle next;
+      double next_c = 0;
+      for (auto w : mesh.vv_range(cur)) {
+        const Point2 p = point2(mesh, w);
+        const double v = p[axis];
+        if (up ? !(c < v && v <= b[axis]) : !(b[axis] <= v && v < c)) continue;
+        const int other = 1 - axis;  // and within the segment's extent (not on its line beyond it)
+        if (p[other] < std::min(a[other], b[other]) || p[other] > std::max(a[other], b[other])) continue;
+        if (std::fabs(predicates::orient2d_value(a, b, p)) / l2 > tol) continue;
+        if (!next.is_valid() || (up ? v < next_c : v > next_c)) next = w, next_c = v;
+      }
+      if (!next.is_valid() || steps > mesh.n_vertices())
+        return "segment " + std::to_string(s) + " " + point_text(a) + "-" + point_text(b) + ": no mesh edge continues along it from " +
+               point_text(point2(mesh, cur));
+      cur = next;
+    }
+  }
   return {};
 }
 

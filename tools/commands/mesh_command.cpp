@@ -43,7 +43,9 @@ int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
   io::WarningSink warn = [&](const std::string& w) {
     if (!global.quiet) std::cerr << "acute: warning: " << w << "\n";
   };
-  Domain domain = io::read_domain(args.input, warn);
+  io::ReadOptions read_options;
+  read_options.allow_crossing_segments = args.split_crossings;  // the CDT splits them
+  Domain domain = io::read_domain(args.input, warn, read_options);
   domain.convex_hull = domain.convex_hull || args.convex_hull;
   MeshOptions options = args.options;
   options.method = parse_method(args.method);

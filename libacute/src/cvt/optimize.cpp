@@ -341,6 +341,8 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
 
 CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   CvtResult out;
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const Mesh cdt = build_cdt(domain);
   SizeFieldParams sp;
   sp.size = params.size;
@@ -349,20 +351,43 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   sp.gradation = params.gradation;
   sp.lfs_factor = params.lfs_factor;
   sp.hmax = params.hmax;
+  sp.max_vertices = params.max_vertices;
+  if (params.time_limit_s > 0) sp.time_limit_s = std::max(0.25 * params.time_limit_s - elapsed(), 1e-9);
   out.size_field = make_size_field(cdt, sp);
   SamplingParams samp;
   samp.seed = params.seed;
   out.mesh = sample_domain(domain, cdt, out.size_field, samp, &out.sampling);
+  // The count model is not exact (and --size has none): coarsen and resample while over budget.
+  // Samples scale as 1 / h^2 away from the input points, which stay.
+  for (int k = 0; k < 2 && params.max_vertices > 0 && out.mesh.n_vertices() > params.max_vertices; ++k) {
+    if (params.time_limit_s > 0 && elapsed() > params.time_limit_s) break;
+    const double inputs = static_cast<double>(domain.points.size());
+    const double extra = static_cast<double>(out.mesh.n_vertices()) - inputs;
+    const double room = static_cast<double>(params.max_vertices) - inputs;
+    if (room <= 0) break;
+    out.size_field.scale(1.05 * std::sqrt(extra / room));
+    out.sampling = {};
+    out.mesh = sample_domain(domain, cdt, out.size_field, samp, &out.sampling);
+  }
+  out.over_budget = params.max_vertices > 0 && out.mesh.n_vertices() > params.max_vertices;
   CvtOptimizeParams op;
   op.lloyd_iterations = params.lloyd_iterations;
   op.lbfgs_iterations = params.lbfgs_iterations;
   op.move_tolerance = params.move_tolerance;
-  op.time_limit_s = params.time_limit_s;
+  if (params.time_limit_s > 0) {
+    const double left = params.time_limit_s - elapsed();
+    if (left <= 0) {
+      op.lloyd_iterations = op.lbfgs_iterations = 0;
+      out.out_of_time = true;
+    }
+    op.time_limit_s = std::max(left, 1e-9);
+  }
   op.observer = params.observer;
   out.optimization = cvt_optimize(out.mesh, out.size_field, op);
   out.iterations = out.optimization.lloyd_iterations + out.optimization.lbfgs_iterations;
   out.energy = out.optimization.energy;
   out.gradient_norm = out.optimization.gradient_norm;
+  if (params.time_limit_s > 0 && !out.optimization.converged && elapsed() > params.time_limit_s) out.out_of_time = true;
   return out;
 }
 

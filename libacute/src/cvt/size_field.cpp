@@ -6,6 +6,7 @@
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -415,7 +416,11 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) 
     if (!params.graded) return SizeField::uniform(hn);
     // The graded field with hmax = hn is <= hn everywhere, so it predicts >= N vertices; raise hmax
     // (never the lfs-bound values) until the count comes down to N, or to hmax = diameter.
-    const double target = static_cast<double>(params.target_vertices);
+    const auto start = std::chrono::steady_clock::now();
+    auto out_of_time = [&] {
+      return params.time_limit_s > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > params.time_limit_s;
+    };
+    const double target = static_cast<double>(params.max_vertices > 0 ? std::min(params.target_vertices, params.max_vertices) : params.target_vertices);
     const double hmin = params.hmin > 0 ? std::min(params.hmin, hn) : std::min(1e-6 * dm.diameter, hn);
     const LfsSamples samples = local_feature_size_samples(input_cdt, hn);
     auto field_at = [&](double hmax) { return graded_field(samples, dm, params.lfs_factor, hmin, hmax, params.gradation); };
@@ -426,10 +431,11 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) 
       // The features alone need more than N: keep h <= lfs (the count exceeds the target) unless
       // that is over kMaxExcess * N; then coarsen the lfs-bound sizes by a common factor lambda
       // (count ~ 1 / lambda^2 there: a few secant steps).
-      const double cap = kMaxExcess * target;
+      double cap = kMaxExcess * target;
+      if (params.max_vertices > 0) cap = std::min(cap, static_cast<double>(params.max_vertices));
       if (at_top <= cap) return ft;
       double lambda = params.lfs_factor, count = at_top;
-      for (int k = 0; k < 5 && std::abs(count / cap - 1.0) >= 0.1; ++k) {
+      for (int k = 0; k < 5 && std::abs(count / cap - 1.0) >= 0.1; ++k) {  // not cut by time: the first fields are the finest
         lambda *= std::sqrt(count / cap);
         ft = graded_field(samples, dm, lambda, hmin, top, params.gradation);
         count = predicted_vertex_count(input_cdt, ft);
@@ -441,7 +447,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) 
     if (ratio <= 1.02) {
       // At or below the target (the count model is not exact): refine uniformly, never coarsen
       // (the values at the features are the lfs).
-      for (int k = 0; k < 8 && ratio < 0.99; ++k) {
+      for (int k = 0; k < 8 && ratio < 0.99 && !out_of_time(); ++k) {
         f.scale(std::sqrt(ratio));
         ratio = predicted_vertex_count(input_cdt, f) / target;
       }
@@ -453,6 +459,10 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) 
       f = field_at(mid);
       ratio = predicted_vertex_count(input_cdt, f) / target;
       if (std::abs(ratio - 1.0) < 0.02 || hi / lo < 1.001) break;
+      if (out_of_time()) {  // keep a field at or below the count
+        if (ratio > 1.0) f = field_at(hi);
+        break;
+      }
       (ratio > 1.0 ? lo : hi) = mid;
     }
     return f;

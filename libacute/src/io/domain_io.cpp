@@ -98,7 +98,7 @@ void remove_duplicate_segments(Domain& domain, DomainSource* source, const Warni
   if (source && source->segment_lines.size() > out) source->segment_lines.resize(out);
 }
 
-void validate_domain(const Domain& d, const DomainSource* src) {
+void validate_domain(const Domain& d, const DomainSource* src, bool allow_crossings) {
   const int base = src ? src->index_base : 0;
   const std::string plain = d.source_path.empty() ? std::string() : d.source_path + ": ";
   auto at_point = [&](std::size_t i) {
@@ -194,8 +194,8 @@ void validate_domain(const Domain& d, const DomainSource* src) {
     const auto& t = d.segments[j];
     const bool repeated = std::min(s[0], s[1]) == std::min(t[0], t[1]) && std::max(s[0], s[1]) == std::max(t[0], t[1]);
     const auto kind = predicates::intersect_segments(d.points[s[0]], d.points[s[1]], d.points[t[0]], d.points[t[1]]);
-    if (repeated || kind == predicates::SegmentIntersection::Proper ||
-        kind == predicates::SegmentIntersection::Overlapping)
+    if (repeated || (!allow_crossings && (kind == predicates::SegmentIntersection::Proper ||
+                                          kind == predicates::SegmentIntersection::Overlapping)))
       worst = {i, j, kind, repeated};
   });
   if (worst.second >= 0) {
@@ -208,7 +208,7 @@ void validate_domain(const Domain& d, const DomainSource* src) {
 
 }  // namespace detail
 
-void validate_domain(const Domain& domain) { detail::validate_domain(domain, nullptr); }
+void validate_domain(const Domain& domain, bool allow_crossings) { detail::validate_domain(domain, nullptr, allow_crossings); }
 
 std::vector<PointOnSegment> find_points_on_segments(const Domain& d) {
   const int ns = static_cast<int>(d.segments.size());
@@ -292,10 +292,10 @@ Domain domain_of_mesh(const Mesh& mesh) {
   return d;
 }
 
-Domain read_domain(const std::string& path, const WarningSink& warn) {
+Domain read_domain(const std::string& path, const WarningSink& warn, const ReadOptions& options) {
   const std::string ext = detail::extension_of(path);
-  if (ext == ".poly") return read_poly(path, warn);
-  if (ext == ".json") return read_cgshop(path, warn);
+  if (ext == ".poly") return read_poly(path, warn, options);
+  if (ext == ".json") return read_cgshop(path, warn, options);
   if (ext == ".node" && !std::ifstream(detail::with_extension(path, ".ele"))) {
     // A point set: Triangle meshes its convex hull.
     detail::NodeList nodes = detail::read_node_file(path, warn);

@@ -71,7 +71,7 @@ struct DomainSource {
 };
 
 /// validate_domain with file:line prefixes and the file's numbering.
-void validate_domain(const Domain& domain, const DomainSource* source);
+void validate_domain(const Domain& domain, const DomainSource* source, bool allow_crossings = false);
 
 /// Drops repeated segments (same two points, either order), keeping the first; warns once.
 void remove_duplicate_segments(Domain& domain, DomainSource* source, const WarningSink& warn);

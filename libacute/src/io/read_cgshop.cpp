@@ -136,7 +136,7 @@ bool coordinate_of(const nlohmann::json& j, double& value) {
 
 }  // namespace
 
-Domain read_cgshop(const std::string& path, const WarningSink& warn) {
+Domain read_cgshop(const std::string& path, const WarningSink& warn, const ReadOptions& options) {
   std::ifstream in(path);
   if (!in) throw IoError(path + ": cannot open");
   nlohmann::json j;
@@ -201,7 +201,7 @@ Domain read_cgshop(const std::string& path, const WarningSink& warn) {
            std::to_string(cs.size()) + " entries");
   }
   detail::remove_duplicate_segments(d, nullptr, warn);
-  validate_domain(d);
+  validate_domain(d, options.allow_crossing_segments);
   return d;
 }
 

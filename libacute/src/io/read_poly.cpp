@@ -75,7 +75,7 @@ NodeList read_node_file(const std::string& path, const WarningSink& warn) {
 
 }  // namespace detail
 
-Domain read_poly(const std::string& path, const WarningSink& warn) {
+Domain read_poly(const std::string& path, const WarningSink& warn, const ReadOptions& options) {
   using namespace detail;
   LineReader in(path);
   Domain domain;
@@ -158,7 +158,7 @@ Domain read_poly(const std::string& path, const WarningSink& warn) {
   }
 
   remove_duplicate_segments(domain, &source, warn);
-  validate_domain(domain, &source);
+  validate_domain(domain, &source, options.allow_crossing_segments);
   return domain;
 }
 

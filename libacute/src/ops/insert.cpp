@@ -93,6 +93,18 @@ void split_with_vertex(Mesh& mesh, EdgeHandle eh, VertexHandle vh) {
   }
 }
 
+/// A point on a segment piece must lie strictly between its ends in each coordinate the segment
+/// varies in (see strictly_between_along) and close enough to the segment's exact line to be read
+/// back as one of its points (close_enough_to_line); true for edges that are not on a segment.
+bool splits_in_order(const Mesh& mesh, EdgeHandle eh, const Point2& p) {
+  const int seg = mesh.data(eh).segment;
+  if (seg < 0 || static_cast<std::size_t>(seg) >= segment_table(mesh).size()) return true;
+  const auto h0 = mesh.halfedge_handle(eh, 0);
+  const auto& ends = segment_endpoints(mesh, seg);
+  return strictly_between_along(ends, point2(mesh, mesh.from_vertex_handle(h0)), p, point2(mesh, mesh.to_vertex_handle(h0))) &&
+         close_enough_to_line(ends, p);
+}
+
 VertexHandle restore_around(Mesh& mesh, VertexHandle vh) {
   std::vector<EdgeHandle> queue;
   push_star_edges(mesh, vh, queue);
@@ -121,6 +133,10 @@ VertexHandle insert_point(Mesh& mesh, const Point2& p, FaceHandle start, EdgeHan
         if (blocked_edge) *blocked_edge = loc.edge;
         return VertexHandle();
       }
+      if (!splits_in_order(mesh, loc.edge, p)) {
+        if (blocked_edge) *blocked_edge = loc.edge;
+        return VertexHandle();
+      }
       const VertexHandle vh = mesh.add_vertex(Mesh::Point(p.x(), p.y(), 0.0));
       split_with_vertex(mesh, loc.edge, vh);
       return restore_around(mesh, vh);
@@ -133,7 +149,15 @@ VertexHandle split_edge(Mesh& mesh, EdgeHandle eh, const Point2& p_in) {
   if (mesh.data(eh).frozen) return VertexHandle();
   Point2 p = p_in;
   const int seg = mesh.data(eh).segment;
-  if (seg >= 0 && static_cast<std::size_t>(seg) < segment_table(mesh).size()) p = project_on_segment(mesh, seg, p_in);
+  if (seg >= 0 && static_cast<std::size_t>(seg) < segment_table(mesh).size()) {
+    const auto h0 = mesh.halfedge_handle(eh, 0);
+    const Point2 lo = point2(mesh, mesh.from_vertex_handle(h0)), hi = point2(mesh, mesh.to_vertex_handle(h0));
+    const auto& ends = segment_endpoints(mesh, seg);
+    p = project_on_line(ends, p_in, &lo, &hi);
+    // No double strictly between the piece's ends along the segment and near enough its line: the
+    // piece is as short as rounding allows, another point would not read back as the segment's.
+    if (!splits_in_order(mesh, eh, p)) return VertexHandle();
+  }
   // The new triangles (v0, p, x) and (p, v1, x) for each side x must be counter-clockwise.
   for (int side = 0; side < 2; ++side) {
     const auto heh = mesh.halfedge_handle(eh, side);

@@ -1,21 +1,38 @@
 #include <acute/ops/relocate.h>
 
+#include <acute/mesh/segments.h>
 #include <acute/predicates/predicates.h>
 
+#include <algorithm>
+
 namespace acute {
+
+bool keeps_segment_order(const Mesh& mesh, VertexHandle vh, const Point2& p) {
+  const int seg = mesh.data(vh).segment;
+  Point2 w[2];
+  int n = 0;
+  for (auto heh : mesh.voh_range(vh))
+    if (mesh.data(mesh.edge_handle(heh)).segment == seg && n < 2) w[n++] = point2(mesh, mesh.to_vertex_handle(heh));
+  if (n < 2) return false;
+  // Strictly between the neighbours in each coordinate in which they differ, equal where they
+  // agree (splits keep the chain strictly monotone in every coordinate the segment varies in, so
+  // the neighbours differ exactly there): exact comparisons, no tolerance.
+  for (int i = 0; i < 2; ++i) {
+    const double lo = std::min(w[0][i], w[1][i]), hi = std::max(w[0][i], w[1][i]);
+    if (lo == hi ? p[i] != lo : !(lo < p[i] && p[i] < hi)) return false;
+  }
+  return true;
+}
 
 OpVerdict can_relocate(const Mesh& mesh, VertexHandle vh, const Point2& p) {
   const auto& data = mesh.data(vh);
   if (data.kind == VertexKind::Input) return OpVerdict::InputVertex;
   if (!std::isfinite(p.x()) || !std::isfinite(p.y())) return OpVerdict::WouldInvert;
   if (data.kind == VertexKind::OnSegment) {
-    // p must stay strictly between the two neighbours along the segment.
-    for (auto heh : mesh.voh_range(vh)) {
-      if (mesh.data(mesh.edge_handle(heh)).segment != data.segment) continue;
-      const Point2 w = point2(mesh, mesh.to_vertex_handle(heh));
-      const Point2 here = point2(mesh, vh);
-      if ((p - w).dot(here - w) <= 0) return OpVerdict::OffSegment;
-    }
+    if (!keeps_segment_order(mesh, vh, p)) return OpVerdict::OffSegment;
+    if (data.segment >= 0 && static_cast<std::size_t>(data.segment) < segment_table(mesh).size() &&
+        !close_enough_to_line(segment_endpoints(mesh, data.segment), p))
+      return OpVerdict::OffSegment;
   }
   for (auto heh : mesh.voh_range(vh)) {
     if (mesh.is_boundary(heh)) continue;

@@ -8,6 +8,7 @@
 #include <acute/repair/repair.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -60,6 +61,10 @@ void check_options(const MeshOptions& o) {
   if (!(o.gradation >= 1.0)) throw InvalidInput("--gradation must be at least 1");
 }
 
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 /// Target edge length from --size or --vertices (equilateral density: N = 2A / (sqrt(3) h^2)).
 double target_edge(const MeshOptions& o, double area) {
   if (o.size > 0) return o.size;
@@ -71,6 +76,7 @@ double target_edge(const MeshOptions& o, double area) {
 
 MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
   check_options(options);
+  const auto start = std::chrono::steady_clock::now();
   MeshResult result;
   auto notify = [&](const char* phase) {
     if (options.observer) options.observer(MeshProgress{phase, 0, 0, 0});
@@ -99,8 +105,9 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       cp.graded = options.size <= 0;
       cp.gradation = options.gradation;
       cp.seed = options.seed;
-      // Share a time limit between the CVT (at most half) and the repair.
-      if (options.time_limit_s > 0) cp.time_limit_s = 0.5 * options.time_limit_s;
+      // Share a time limit between the CVT (at most half) and the repair (the rest).
+      if (options.time_limit_s > 0) cp.time_limit_s = std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);
+      cp.max_vertices = options.max_vertices;
       if (options.method == Method::Acute) {
         // The repair does not need a converged CVT, only well-spread vertices: a short optimisation.
         cp.lbfgs_iterations = 40;
@@ -111,8 +118,20 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
         cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy, p.gradient_norm, p.phase}); };
       try {
         CvtResult cvt = cvt_mesh(domain, cp);
-        result.mesh = std::move(cvt.mesh);
-        result.iterations = cvt.iterations;
+        if (cvt.out_of_time) result.notes.push_back("the CVT start stopped at its share of the time limit");
+        if (cvt.over_budget) {
+          // Keep the CDT, refined within the budget: the best valid mesh the limits allow.
+          result.notes.push_back("the CVT start needs " + std::to_string(cvt.mesh.n_vertices()) + " vertices, over the budget of " +
+                                 std::to_string(options.max_vertices) + "; using a Delaunay refinement start within it");
+          RefineParams rp;
+          rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
+          rp.max_edge = target_edge(options, mesh_area(result.mesh));
+          rp.max_vertices = options.max_vertices;
+          refine(result.mesh, rp);
+        } else {
+          result.mesh = std::move(cvt.mesh);
+          result.iterations = cvt.iterations;
+        }
       } catch (const InvalidInput& e) {
         // The domain itself is fine (its CDT was built above): fall back to a refinement start.
         result.notes.push_back(std::string("CVT start failed (") + e.what() + "); using a Delaunay refinement start");
@@ -130,7 +149,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       params.bounds.max_deg = options.max_angle_deg;
       if (options.max_iterations > 0) params.max_iterations = options.max_iterations;
       params.max_vertices = options.max_vertices;
-      params.time_limit_s = options.time_limit_s;
+      if (options.time_limit_s > 0) params.time_limit_s = std::max(options.time_limit_s - seconds_since(start), 1e-9);
       if (options.observer)
         params.observer = [&](const RepairProgress& p) { options.observer(MeshProgress{"repair", p.iteration, p.bad, 0}); };
       const RepairResult r = repair_acute(result.mesh, params);

@@ -25,6 +25,12 @@ double orient2d_naive(const Point2& a, const Point2& b, const Point2& c) {
 
 }  // namespace detail
 
+double orient2d_value(const Point2& a, const Point2& b, const Point2& c) {
+  const detail::Expansion<2> bax = detail::diff(b.x(), a.x()), bay = detail::diff(b.y(), a.y());
+  const detail::Expansion<2> cax = detail::diff(c.x(), a.x()), cay = detail::diff(c.y(), a.y());
+  return detail::difference(detail::product(bax, cay), detail::product(bay, cax)).estimate();
+}
+
 Sign orient2d(const Point2& a, const Point2& b, const Point2& c) {
   const double left = (b.x() - a.x()) * (c.y() - a.y());
   const double right = (b.y() - a.y()) * (c.x() - a.x());

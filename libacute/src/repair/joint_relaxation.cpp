@@ -1,6 +1,7 @@
 #include <acute/repair/joint_relaxation.h>
 
 #include <acute/mesh/segments.h>
+#include <acute/ops/relocate.h>
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
@@ -102,6 +103,11 @@ double patch_energy(const Mesh& mesh, const Patch& patch, const AngleBounds& bou
 bool patch_valid(const Mesh& mesh, const Patch& patch) {
   for (const auto& v : patch.faces)
     if (predicates::orient2d(point2(mesh, v[0]), point2(mesh, v[1]), point2(mesh, v[2])) != Sign::Positive) return false;
+  // Segment chains stay monotone and near their lines (else they no longer read back as the segment).
+  for (std::size_t i = 0; i < patch.movable.size(); ++i)
+    if (patch.axis[i] != Point2(0, 0) && (!keeps_segment_order(mesh, patch.movable[i], point2(mesh, patch.movable[i])) ||
+                                          !close_enough_to_line(patch.ends[i], point2(mesh, patch.movable[i]))))
+      return false;
   return true;
 }
 

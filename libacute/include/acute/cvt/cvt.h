@@ -79,7 +79,13 @@ struct CvtParams {
   int lbfgs_iterations = 200;
   double move_tolerance = 1e-3;     ///< rms |v - c_v| / h(v) to stop at
   unsigned seed = 1;
-  double time_limit_s = 0;         ///< > 0: optimisation stops after this many seconds
+  /// > 0: the whole CVT start (size field, sampling, optimisation) stops after this many seconds:
+  /// the field's calibration keeps its best so far, the optimisation gets what is left (none when
+  /// nothing is; the sampled mesh is valid as it is)
+  double time_limit_s = 0;
+  /// > 0: at most this many vertices (the field is coarsened and the domain resampled when the
+  /// samples exceed it; only the input points alone can exceed it, then CvtResult::over_budget)
+  std::size_t max_vertices = 0;
   std::function<void(const CvtProgress&)> observer;
 };
 
@@ -91,6 +97,8 @@ struct CvtResult {
   int iterations = 0;         ///< lloyd + lbfgs
   double energy = 0;
   double gradient_norm = 0;
+  bool over_budget = false;   ///< more vertices than max_vertices even at the coarsest field tried
+  bool out_of_time = false;   ///< the time limit ended the start before the optimisation did
 };
 
 /// build_cdt(domain) -> size field -> sample_domain -> cvt_optimize.

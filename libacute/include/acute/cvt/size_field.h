@@ -63,6 +63,12 @@ struct SizeFieldParams {
   double lfs_factor = 1.0;        ///< graded field: h = lfs_factor * local feature size at input points
   double hmin = 0;                ///< graded field clamp; 0: 1e-6 * diameter
   double hmax = 0;                ///< graded field clamp; 0: diameter / 25
+  /// > 0: with target_vertices, the field predicts at most this many vertices (coarsening the
+  /// feature-bound sizes when the features alone would need more)
+  std::size_t max_vertices = 0;
+  /// > 0: the count calibration stops after this many seconds with a field predicting at most the
+  /// count (the coarsening of an over-fine feature-bound field always runs: it bounds the samples)
+  double time_limit_s = 0;
 };
 
 /// Area, boundary length and diameter (bounding-box diagonal) of a meshed domain.

@@ -15,29 +15,37 @@ namespace acute::io {
 /// Callback for non-fatal remarks (e.g. "regional attributes ignored"). May be empty.
 using WarningSink = std::function<void(const std::string&)>;
 
+/// What the domain readers accept beyond a valid PSLG.
+struct ReadOptions {
+  /// Crossing and overlapping segments pass validation (for build_cdt with
+  /// CrossingSegments::Split, the CLI's --split-crossings); repeated segments are still dropped.
+  bool allow_crossing_segments = false;
+};
+
 /// Reads a Triangle .poly file (0- or 1-based, from the first vertex index; a vertex count of 0
 /// reads the sibling .node). Regional attributes, a missing hole section and repeated segments
 /// are reported through `warn` (repeats dropped). Ends with validate_domain; messages are
 /// "path:line: ..." in the file's numbering. Indices in the Domain are 0-based.
-Domain read_poly(const std::string& path, const WarningSink& warn = {});
+Domain read_poly(const std::string& path, const WarningSink& warn = {}, const ReadOptions& options = {});
 
 /// Reads a CG:SHOP 2025 instance JSON (points, region_boundary, additional_constraints).
 /// Coordinates may be numbers or strings "p/q" (rounded to the nearest double). Boundary segments
 /// get marker 1, constraints 0. Ends with validate_domain.
-Domain read_cgshop(const std::string& path, const WarningSink& warn = {});
+Domain read_cgshop(const std::string& path, const WarningSink& warn = {}, const ReadOptions& options = {});
 
 /// Reads a domain by extension: .poly, .json, or a mesh (.off .obj .ply .node/.ele) whose
 /// boundary becomes the segments and whose boundary vertices become the points (domain_of_mesh).
 /// A .node file without a sibling .ele is a point set: convex_hull is set.
 /// Note: the readers never set convex_hull otherwise (classic/box.poly is meant for it: the CLI
 /// has a flag).
-Domain read_domain(const std::string& path, const WarningSink& warn = {});
+Domain read_domain(const std::string& path, const WarningSink& warn = {}, const ReadOptions& options = {});
 
 /// Checks a domain: finite coordinates in the exact range, indices in range, no duplicate points,
 /// no zero-length, repeated, crossing or overlapping segments (exact). Segments may touch, and a
 /// point may lie inside a segment (see find_points_on_segments). O(n log n + k) for typical
-/// inputs. Throws InvalidInput naming the elements (and "source_path: " when set).
-void validate_domain(const Domain& domain);
+/// inputs. Throws InvalidInput naming the elements (and "source_path: " when set). With
+/// allow_crossings, crossing and overlapping segments are accepted (repeated ones are not).
+void validate_domain(const Domain& domain, bool allow_crossings = false);
 
 /// A point lying in the interior of a segment that does not end there. Allowed by validate_domain
 /// (Triangle splits the segment at such a point), but the mesher has to handle it.

@@ -20,11 +20,41 @@ const SegmentTable& segment_table(const Mesh& mesh);
 /// Endpoints of input segment `id`. \pre 0 <= id < segment_table(mesh).size()
 const std::array<Point2, 2>& segment_endpoints(const Mesh& mesh, int id);
 
-/// The point of segment `id`'s supporting line nearest to p (rounded to doubles).
+/// The point of segment `id`'s supporting line nearest to p, as a pair of doubles chosen by
+/// snap_to_line (so it stays on the line to far better than a rounded projection on tiny segments).
 Point2 project_on_segment(const Mesh& mesh, int id, const Point2& p);
 
 /// The same for a segment given by its endpoints: for hot loops that looked the segment up once
-/// (the table lookup goes through a named mesh property).
-Point2 project_on_line(const std::array<Point2, 2>& ends, const Point2& p);
+/// (the table lookup goes through a named mesh property). With lo and hi (the neighbours along the
+/// segment), only points strictly_between_along them are candidates; when there is none the result
+/// is not between them (the caller checks and refuses the split or move).
+Point2 project_on_line(const std::array<Point2, 2>& ends, const Point2& p, const Point2* lo = nullptr,
+                       const Point2* hi = nullptr);
+
+/// True when p lies strictly between lo and hi in every coordinate in which the segment `ends` is
+/// not constant (exact comparisons). This is how the points of a segment chain must be ordered for
+/// the chain to be read back as the segment (a referee walks it coordinate by coordinate); on a
+/// nearly vertical segment a few ulps wide it bounds the number of Steiner points.
+bool strictly_between_along(const std::array<Point2, 2>& ends, const Point2& lo, const Point2& p, const Point2& hi);
+
+/// Distance of p from the line through ends divided by the segment length (exact, rounded once).
+double line_deviation(const std::array<Point2, 2>& ends, const Point2& p);
+
+/// The largest line_deviation of a point placed on a segment (2^-34 ~ 5.8e-11, a 1.7x margin under
+/// the 1e-10 a referee allows for rounded coordinates). On a segment too short for its distance
+/// from the origin (1e-7 long at 1e3: an ulp is 1e-6 of it) only a few doubles come that close;
+/// splits and moves elsewhere are refused, so the segment keeps fewer Steiner points.
+constexpr double kMaxSegmentDeviation = 0x1p-34;
+
+/// line_deviation(ends, p) <= kMaxSegmentDeviation.
+bool close_enough_to_line(const std::array<Point2, 2>& ends, const Point2& p);
+
+/// A point of doubles at most 4096 ulps (along the dominant axis) or 1/64 of the segment from q (q itself when it is already within 2^-42 of
+/// the segment length of the line) that minimises line_deviation: rounding a point of a short
+/// segment far from the origin (1e-5 long at 1e3) puts it ~1e-9 of the length off the line, which
+/// is visible as a gap or overlap; among the nearby doubles some are 100x closer.
+/// lo/hi as for project_on_line.
+Point2 snap_to_line(const std::array<Point2, 2>& ends, const Point2& q, const Point2* lo = nullptr,
+                    const Point2* hi = nullptr);
 
 }  // namespace acute

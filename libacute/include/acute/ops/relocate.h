@@ -5,8 +5,13 @@
 
 namespace acute {
 
+/// For a vertex on a segment: p lies strictly between its two neighbours along the segment in
+/// every coordinate in which they differ and equals theirs where they agree (exact comparisons;
+/// p is on the segment's line by the caller's projection). The chain then stays monotone.
+bool keeps_segment_order(const Mesh& mesh, VertexHandle vh, const Point2& p);
+
 /// Ok when vh may move to p: vh is not Input; a vertex on a segment stays on its segment (p is
-/// projected by the caller; checked to lie strictly between its neighbours along the segment);
+/// projected by the caller; checked by keeps_segment_order and close_enough_to_line);
 /// every incident triangle stays strictly counter-clockwise (exact).
 OpVerdict can_relocate(const Mesh& mesh, VertexHandle vh, const Point2& p);
 

@@ -11,6 +11,10 @@ namespace acute::predicates {
 /// Sign of det[b-a, c-a]: Positive when a, b, c turn counter-clockwise, Zero when collinear.
 Sign orient2d(const Point2& a, const Point2& b, const Point2& c);
 
+/// det[b-a, c-a] computed exactly and rounded once (relative error ~1e-16): a measure, e.g. of how
+/// far a rounded point lies from a line, never a topological decision (use orient2d for those).
+double orient2d_value(const Point2& a, const Point2& b, const Point2& c);
+
 /// Positive when d lies strictly inside the circle through a, b, c (given counter-clockwise),
 /// Zero when cocircular, Negative outside. For clockwise a, b, c the sign is reversed.
 Sign incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d);

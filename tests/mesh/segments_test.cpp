@@ -1,0 +1,54 @@
+#include <acute/mesh/segments.h>
+#include <acute/predicates/predicates.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace acute {
+namespace {
+
+// A side of the tiny hole of tests/data/regressions/tiny_slanted_hole_far_from_origin.poly.
+const std::array<Point2, 2> kTinyFar{Point2(-999.8643391292297, -1000.5686505468435), Point2(-999.8643396596642, -1000.5686942271435)};
+
+TEST(SnapToLine, points_of_a_tiny_segment_far_from_origin_stay_within_1e_10_of_its_length) {
+  const auto& [a, b] = kTinyFar;
+  double worst_rounded = 0, worst_snapped = 0;
+  for (int i = 1; i < 64; ++i) {
+    const double t = i / 64.0;
+    const Point2 rounded = a + t * (b - a);
+    const Point2 snapped = project_on_line(kTinyFar, rounded);
+    worst_rounded = std::max(worst_rounded, line_deviation(kTinyFar, rounded));
+    worst_snapped = std::max(worst_snapped, line_deviation(kTinyFar, snapped));
+    EXPECT_LE((snapped - rounded).norm(), (b - a).norm() / 64) << "t " << t;  // still about there
+  }
+  EXPECT_GT(worst_rounded, 1e-10);  // the rounded interpolation is visibly off the segment
+  EXPECT_LT(worst_snapped, 1e-10);
+}
+
+TEST(SnapToLine, keeps_a_point_already_on_the_line) {
+  const std::array<Point2, 2> ends{Point2(0, 0), Point2(4, 2)};
+  EXPECT_EQ(snap_to_line(ends, Point2(1, 0.5)), Point2(1, 0.5));
+  EXPECT_EQ(predicates::orient2d(ends[0], ends[1], project_on_line(ends, Point2(3, 0))), Sign::Zero);
+}
+
+TEST(SnapToLine, respects_the_bracket_and_finds_nothing_in_an_empty_one) {
+  // Nearly vertical, 5 ulps wide in x: only 4 doubles lie strictly between the ends in x.
+  const std::array<Point2, 2> ends{Point2(2.0, 0.6666666666666666), Point2(2.000000000000002, 1.3333333333333333)};
+  const Point2 lo = ends[0], hi = ends[1];
+  const Point2 mid = project_on_line(ends, 0.5 * (lo + hi), &lo, &hi);
+  EXPECT_TRUE(strictly_between_along(ends, lo, mid, hi));
+  const Point2 level(std::nextafter(2.0, 3.0), 0.8), above(std::nextafter(2.0, 3.0), 0.9);
+  EXPECT_FALSE(strictly_between_along(ends, level, project_on_line(ends, 0.5 * (level + above), &level, &above), above));
+}
+
+TEST(StrictlyBetweenAlong, ignores_the_coordinate_a_segment_is_constant_in) {
+  const std::array<Point2, 2> horizontal{Point2(0, 1), Point2(4, 1)};
+  EXPECT_TRUE(strictly_between_along(horizontal, Point2(1, 1), Point2(2, 1), Point2(3, 1)));
+  EXPECT_FALSE(strictly_between_along(horizontal, Point2(1, 1), Point2(3, 1), Point2(3, 1)));
+  const std::array<Point2, 2> slanted{Point2(0, 0), Point2(4, 1)};
+  EXPECT_FALSE(strictly_between_along(slanted, Point2(1, 0.25), Point2(2, 0.25), Point2(3, 0.25)));
+}
+
+}  // namespace
+}  // namespace acute

@@ -1,0 +1,71 @@
+// Resource bounds of the default pipeline on a domain whose features alone call for far more
+// vertices than requested (a boundary of many tiny teeth, like shared/domains/classic/debug2):
+// --max-vertices and --time-limit must end the run with a valid, conforming mesh within the budget
+// and a note saying what stopped it. Nothing here is timed: a near-zero time limit only has to
+// give a valid mesh.
+#include <acute/mesher.h>
+
+#include "support/domain_verify.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace acute {
+namespace {
+
+/// The unit square whose bottom side is `teeth` teeth 1e-4 high.
+Domain toothed_square(int teeth) {
+  Domain d;
+  d.name = "toothed_square";
+  for (int i = 0; i <= 2 * teeth; ++i) d.points.emplace_back(static_cast<double>(i) / (2 * teeth), i % 2 ? -1e-4 : 0.0);
+  d.points.emplace_back(1.0, 1.0);
+  d.points.emplace_back(0.0, 1.0);
+  const int n = static_cast<int>(d.points.size());
+  for (int i = 0; i < n; ++i) d.segments.push_back({i, (i + 1) % n});
+  return d;
+}
+
+bool has_note(const MeshResult& r, const std::string& word) {
+  for (const auto& n : r.notes)
+    if (n.find(word) != std::string::npos) return true;
+  return false;
+}
+
+TEST(ResourceBounds, vertex_budget_below_what_the_features_need_gives_a_valid_mesh_within_it) {
+  const Domain d = toothed_square(500);
+  MeshOptions options;
+  options.method = Method::Cvt;  // the start alone (the repair has its own budget tests)
+  options.target_vertices = 200;
+  options.max_vertices = 1500;  // the input has 1003 points, the CVT start had ~2000 unbounded
+  const MeshResult r = generate_mesh(d, options);
+  EXPECT_LE(r.mesh.n_vertices(), options.max_vertices);
+  EXPECT_EQ(test::verify_conforms(r.mesh, d, mesh_area(build_domain_cdt(d))), "");
+  EXPECT_EQ(test::verify_segment_chains(r.mesh, d), "");
+}
+
+TEST(ResourceBounds, budget_barely_above_the_input_points_falls_back_to_a_refinement_within_it) {
+  const Domain d = toothed_square(500);
+  MeshOptions options;
+  options.method = Method::Cvt;
+  options.target_vertices = 200;
+  options.max_vertices = 1010;
+  const MeshResult r = generate_mesh(d, options);
+  EXPECT_LE(r.mesh.n_vertices(), options.max_vertices);
+  EXPECT_EQ(test::verify_conforms(r.mesh, d, mesh_area(build_domain_cdt(d))), "");
+  EXPECT_EQ(test::verify_segment_chains(r.mesh, d), "");
+}
+
+TEST(ResourceBounds, exhausted_time_limit_still_gives_a_valid_mesh) {
+  const Domain d = toothed_square(200);
+  MeshOptions options;
+  options.target_vertices = 200;
+  options.time_limit_s = 1e-6;
+  const MeshResult r = generate_mesh(d, options);
+  EXPECT_TRUE(has_note(r, "time limit"));
+  EXPECT_EQ(test::verify_conforms(r.mesh, d, mesh_area(build_domain_cdt(d))), "");
+  EXPECT_EQ(test::verify_segment_chains(r.mesh, d), "");
+}
+
+}  // namespace
+}  // namespace acute
