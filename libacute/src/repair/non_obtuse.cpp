@@ -577,4 +577,49 @@ NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtusePa
   return result;
 }
 
+NonObtuseResult non_obtuse_from_start(const Domain& domain, const Mesh& start, const NonObtuseParams& params) {
+  const auto t0 = Clock::now();
+  const bool timed = params.time_limit_s > 0;
+  const auto deadline = timed ? t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(params.time_limit_s))
+                              : Clock::time_point::max();
+  const Mesh cdt = build_cdt(domain);
+  NonObtuseResult result;
+  Triangulation tr;
+  if (!Triangulation::from_start(cdt, start, tr)) {
+    result.n_obtuse = static_cast<std::size_t>(-1);
+    return result;
+  }
+  // The start has far more Steiner points than a CDT attempt needs: the cap grows with it.
+  const std::size_t cap = std::max(params.max_steiner > 0 ? params.max_steiner : 60 * domain.points.size() + 2000,
+                                   2 * tr.n_steiner() + 100);
+  ++result.rounds;
+  bool ok = tr.n_obtuse() == 0;
+  if (!ok) {
+    // A few attempts in different orders, each from the start (a failed one may leave more).
+    const Triangulation initial = tr;
+    for (unsigned attempt = 0; attempt < 8 && !ok; ++attempt) {
+      if (attempt > 0) {
+        if (Clock::now() > deadline || (params.cancel && params.cancel())) break;
+        tr = initial;
+        ++result.rounds;
+      }
+      NonObtuseParams p = params;
+      p.seed = params.seed + attempt;
+      NonObtuseSolver solver(tr, p, timed ? Clock::now() + (deadline - Clock::now()) / 2 : deadline);
+      ok = solver.refine(cap, attempt > 0);
+    }
+  }
+  result.n_refined = tr.n_steiner();
+  if (ok) {
+    NonObtuseSolver pruner(tr, params, deadline);
+    pruner.prune();
+  }
+  result.mesh = tr.to_mesh(cdt, &result.exact);
+  result.n_steiner = tr.n_steiner();
+  result.n_obtuse = tr.n_obtuse();
+  result.n_right = tr.n_right();
+  result.ok = result.n_obtuse == 0;
+  return result;
+}
+
 }  // namespace acute

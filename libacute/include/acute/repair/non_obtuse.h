@@ -43,4 +43,13 @@ struct NonObtuseResult {
 /// \throws InvalidInput for an invalid domain (as build_cdt).
 NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtuseParams& params = {});
 
+/// The same refinement and pruning from a start mesh instead of the CDT: a mesh holding every
+/// vertex of build_cdt(domain) (same input_index and position) and Steiner points, with its
+/// constraint data and segment table (e.g. the acute repair's result on a CVT or a refined mesh;
+/// see RequiredStart). Steiner points on a segment are first moved exactly onto it, then the
+/// obtuse triangles left are fixed and Steiner points removed while nothing becomes obtuse.
+/// Result `ok` false with an empty mesh when the start does not fit (a point missing or moved,
+/// or a triangle folded by the move onto a segment).
+NonObtuseResult non_obtuse_from_start(const Domain& domain, const Mesh& start, const NonObtuseParams& params = {});
+
 }  // namespace acute
