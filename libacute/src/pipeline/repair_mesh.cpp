@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <regex>
 #include <string>
@@ -469,7 +471,7 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
   if (o.start == RequiredStart::Auto && o.allow_right) {
     // Right angles allowed: the dedicated non-obtuse triangulation on exact rationals, from the
     // CDT (fewest Steiner points). When it stalls with obtuse triangles left: a start that
-    // already holds every input point (CVT, then Delaunay refinement) made non-obtuse by the
+    // already holds every input point (Delaunay refinement, then CVT) made non-obtuse by the
     // acute repair, its last obtuse triangles fixed and its Steiner points pruned exactly.
     const bool timed = o.time_limit_s > 0;
     auto left = [&] {
@@ -481,9 +483,9 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
     np.cancel = o.cancel;
     notify(o, "non-obtuse");
     RepairMeshResult r = from_non_obtuse(non_obtuse_triangulation(domain, np), domain, bounds, o, "non-obtuse");
-    for (RequiredStart fallback : {RequiredStart::Cvt, RequiredStart::Refine}) {
+    for (RequiredStart fallback : {RequiredStart::Refine, RequiredStart::Cvt}) {
       if (r.status == RepairMeshStatus::Ok || (o.cancel && o.cancel()) || (timed && left() <= 0)) break;
-      const double share = timed ? left() / (fallback == RequiredStart::Cvt ? 2.0 : 1.0) : 0;
+      const double share = timed ? left() / (fallback == RequiredStart::Refine ? 2.0 : 1.0) : 0;
       const auto s0 = std::chrono::steady_clock::now();
       RepairMeshResult f;
       f.domain = domain;
@@ -497,6 +499,10 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
       if (nr.mesh.n_vertices() == 0) continue;  // the start did not fit
       RepairMeshResult g = from_non_obtuse(std::move(nr), domain, bounds, o, f.start + "+non-obtuse");
       g.iterations += f.iterations;
+      if (std::getenv("ACUTE_DEBUG_FALLBACK"))
+        std::fprintf(stderr, "fallback %s: repair left %zu bad; exact: ok %d, obtuse %zu, steiner %zu, refined %zu, rounds %zu\n",
+                     f.start.c_str(), bad_triangles(f.mesh, bounds).size(), (int)(g.status == RepairMeshStatus::Ok), g.n_obtuse_exact,
+                     g.n_steiner, (size_t)0, (size_t)g.iterations);
       if (g.status == RepairMeshStatus::Ok || g.n_obtuse_exact < r.n_obtuse_exact) r = std::move(g);
     }
     if (r.status != RepairMeshStatus::Ok)

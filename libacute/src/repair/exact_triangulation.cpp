@@ -86,7 +86,7 @@ Triangulation Triangulation::from_mesh(const Mesh& mesh) {
   return tr;
 }
 
-bool Triangulation::from_start(const Mesh& cdt, const Mesh& start, Triangulation& out) {
+bool Triangulation::from_start(const Mesh& cdt, const Mesh& start, const SegmentTable& table, Triangulation& out) {
   // Required points first, in the CDT's order (to_mesh copies their data from it).
   std::vector<int> cdt_of_input;
   for (auto vh : cdt.vertices()) {
@@ -114,13 +114,15 @@ bool Triangulation::from_start(const Mesh& cdt, const Mesh& start, Triangulation
     slot[static_cast<std::size_t>(vh.idx())] = c;
   }
   if (std::find(found.begin(), found.end(), 0) != found.end()) return false;
-  const SegmentTable& table = segment_table(start);
   for (auto vh : start.vertices()) {
     if (slot[static_cast<std::size_t>(vh.idx())] >= 0) continue;
     const auto& p = start.point(vh);
-    const int seg = start.data(vh).segment;
+    // The segment it lies on, from its constrained edges (the kinds need not say).
+    int seg = -1;
+    for (auto h : start.voh_range(vh))
+      if (start.data(start.edge_handle(h)).segment >= 0) seg = start.data(start.edge_handle(h)).segment;
     XPoint x{Q(p[0]), Q(p[1])};
-    if (start.data(vh).kind == VertexKind::OnSegment && seg >= 0 && static_cast<std::size_t>(seg) < table.size()) {
+    if (seg >= 0 && static_cast<std::size_t>(seg) < table.size()) {
       // Exactly on the segment (the doubles are only near a slanted one): a + t (b - a) with
       // t the rounded parameter of the nearest point, so the rational stays short.
       const Point2 &a = table[static_cast<std::size_t>(seg)][0], &b = table[static_cast<std::size_t>(seg)][1];

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <acute/mesh/mesh.h>
+#include <acute/mesh/segments.h>
 
 #include <gmpxx.h>
 
@@ -48,9 +49,9 @@ class Triangulation {
   /// From a mesh holding every vertex of `cdt` (same input_index, same position) plus Steiner
   /// points, constraint data and segment table set (e.g. a repaired mesh): the CDT's vertices
   /// are the required points, in its order (to_mesh(cdt, ...) then works); Steiner points on a
-  /// segment are moved exactly onto it. False when the start does not fit (a CDT point missing,
-  /// or a triangle folded by that move).
-  static bool from_start(const Mesh& cdt, const Mesh& start, Triangulation& out);
+  /// segment (endpoints by segment id in `segments`) are moved exactly onto it. False when the
+  /// start does not fit (a CDT point missing, or a triangle folded by that move).
+  static bool from_start(const Mesh& cdt, const Mesh& start, const SegmentTable& segments, Triangulation& out);
   /// Live part as a Mesh (kinds, input indices, segment ids and table as in `like`); exact
   /// coordinates per output vertex into *exact.
   Mesh to_mesh(const Mesh& like, std::vector<std::array<std::string, 2>>* exact) const;

@@ -585,7 +585,10 @@ NonObtuseResult non_obtuse_from_start(const Domain& domain, const Mesh& start, c
   const Mesh cdt = build_cdt(domain);
   NonObtuseResult result;
   Triangulation tr;
-  if (!Triangulation::from_start(cdt, start, tr)) {
+  SegmentTable segments;  // by segment id: the domain's segments
+  for (const auto& sg : domain.segments)
+    segments.push_back({domain.points[static_cast<std::size_t>(sg[0])], domain.points[static_cast<std::size_t>(sg[1])]});
+  if (!Triangulation::from_start(cdt, start, segments, tr)) {
     result.n_obtuse = static_cast<std::size_t>(-1);
     return result;
   }
