@@ -15,8 +15,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <regex>
 #include <string>
@@ -250,7 +248,9 @@ RepairMeshResult from_non_obtuse(NonObtuseResult nr, const Domain& domain, const
 }
 
 /// A start mesh for the required-points repair holding every input point; notes and r.start set.
-Mesh required_start(const Domain& domain, RequiredStart start, const RepairMeshOptions& o, RepairMeshResult& r) {
+/// time_limit_s > 0 bounds the CVT optimisation.
+Mesh required_start(const Domain& domain, RequiredStart start, const RepairMeshOptions& o, RepairMeshResult& r,
+                    double time_limit_s = 0) {
   notify(o, "cdt");
   CdtStats stats;
   Mesh mesh = build_domain_cdt(domain, CdtOptions{}, &stats);
@@ -269,6 +269,7 @@ Mesh required_start(const Domain& domain, RequiredStart start, const RepairMeshO
     CvtParams cp;
     cp.graded = true;
     cp.seed = o.seed;
+    cp.time_limit_s = time_limit_s;
     mesh = cvt_mesh(domain, cp).mesh;
     r.start = "cvt";
   } else {
@@ -489,20 +490,18 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
       const auto s0 = std::chrono::steady_clock::now();
       RepairMeshResult f;
       f.domain = domain;
-      f.mesh = required_start(domain, fallback, o, f);
+      f.mesh = required_start(domain, fallback, o, f, timed ? 0.3 * share : 0);
       RepairMeshOptions ro = o;
       ro.time_limit_s = timed ? std::max(0.05, 0.6 * share) : 0;
       run_repair(f, bounds, ro);
       notify(o, "non-obtuse");
-      np.time_limit_s = timed ? std::max(0.05, share - std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count()) : 0;
+      // Fixing gets what is left of this start's share; pruning a success all the time left.
+      np.refine_time_s = timed ? std::max(0.05, share - std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count()) : 0;
+      np.time_limit_s = timed ? std::max(np.refine_time_s, left()) : 0;
       NonObtuseResult nr = non_obtuse_from_start(domain, compacted_mesh(f.mesh), np);
       if (nr.mesh.n_vertices() == 0) continue;  // the start did not fit
       RepairMeshResult g = from_non_obtuse(std::move(nr), domain, bounds, o, f.start + "+non-obtuse");
       g.iterations += f.iterations;
-      if (std::getenv("ACUTE_DEBUG_FALLBACK"))
-        std::fprintf(stderr, "fallback %s: repair left %zu bad; exact: ok %d, obtuse %zu, steiner %zu, refined %zu, rounds %zu\n",
-                     f.start.c_str(), bad_triangles(f.mesh, bounds).size(), (int)(g.status == RepairMeshStatus::Ok), g.n_obtuse_exact,
-                     g.n_steiner, (size_t)0, (size_t)g.iterations);
       if (g.status == RepairMeshStatus::Ok || g.n_obtuse_exact < r.n_obtuse_exact) r = std::move(g);
     }
     if (r.status != RepairMeshStatus::Ok)

@@ -600,15 +600,20 @@ NonObtuseResult non_obtuse_from_start(const Domain& domain, const Mesh& start, c
   if (!ok) {
     // A few attempts in different orders, each from the start (a failed one may leave more).
     const Triangulation initial = tr;
+    const auto fix_deadline =
+        !timed ? deadline
+               : params.refine_time_s > 0
+                     ? std::min(deadline, t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(params.refine_time_s)))
+                     : t0 + (deadline - t0) / 2;
     for (unsigned attempt = 0; attempt < 8 && !ok; ++attempt) {
       if (attempt > 0) {
-        if (Clock::now() > deadline || (params.cancel && params.cancel())) break;
+        if (Clock::now() > fix_deadline || (params.cancel && params.cancel())) break;
         tr = initial;
         ++result.rounds;
       }
       NonObtuseParams p = params;
       p.seed = params.seed + attempt;
-      NonObtuseSolver solver(tr, p, timed ? Clock::now() + (deadline - Clock::now()) / 2 : deadline);
+      NonObtuseSolver solver(tr, p, timed ? Clock::now() + (fix_deadline - Clock::now()) / 2 : deadline);
       ok = solver.refine(cap, attempt > 0);
     }
   }

@@ -19,6 +19,7 @@ namespace acute {
 struct NonObtuseParams {
   std::size_t max_steiner = 0;   ///< cap on Steiner points during refinement; 0: 60 per input point + 2000
   double time_limit_s = 0;       ///< whole run (refinement, then pruning); 0: none
+  double refine_time_s = 0;      ///< non_obtuse_from_start: the fixing part of time_limit_s (0: half); pruning the rest
   unsigned seed = 1;             ///< order of the local search
   std::function<bool()> cancel;  ///< polled; true stops (the best triangulation so far is returned)
 };
