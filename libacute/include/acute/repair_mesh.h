@@ -102,7 +102,7 @@ RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options
 
 /// Required-points mode on a domain (e.g. a CG:SHOP instance). With allow_right and
 /// RequiredStart::Auto: the exact non-obtuse solver and its fallbacks (see RequiredStart::Auto;
-/// result.exact_coordinates set; half the time limit for the CDT search). Else a
+/// result.exact_coordinates set; 40% of the time limit for the CDT search). Else a
 /// start mesh holding every input point (options.start), then the repair with min 0, max 90.
 /// With RequiredStart::Auto the starts are tried in order of cost in Steiner points, each with a
 /// share of the time limit, until one meets the bound exactly; else the one with fewest bad triangles.

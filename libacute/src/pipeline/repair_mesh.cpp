@@ -479,7 +479,7 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
       return o.time_limit_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
     NonObtuseParams np;
-    np.time_limit_s = timed ? 0.5 * o.time_limit_s : 0;
+    np.time_limit_s = timed ? 0.4 * o.time_limit_s : 0;
     np.seed = o.seed;
     np.cancel = o.cancel;
     notify(o, "non-obtuse");
@@ -490,9 +490,9 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
       const auto s0 = std::chrono::steady_clock::now();
       RepairMeshResult f;
       f.domain = domain;
-      f.mesh = required_start(domain, fallback, o, f, timed ? 0.3 * share : 0);
+      f.mesh = required_start(domain, fallback, o, f, timed ? 0.25 * share : 0);
       RepairMeshOptions ro = o;
-      ro.time_limit_s = timed ? std::max(0.05, 0.6 * share) : 0;
+      ro.time_limit_s = timed ? std::max(0.05, 0.45 * share) : 0;
       run_repair(f, bounds, ro);
       notify(o, "non-obtuse");
       // Fixing gets what is left of this start's share; pruning a success all the time left.

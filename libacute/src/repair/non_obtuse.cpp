@@ -574,6 +574,51 @@ bool unstick(Triangulation& best, const NonObtuseParams& params, std::size_t cap
   return best.n_obtuse() == 0;
 }
 
+/// Steiner points fewer by large neighbourhoods: all Steiner points within a few triangles of a
+/// random one removed and the refinement rerun from there; kept when the result is non-obtuse
+/// with fewer points (a dense start, as a repaired CVT mesh, loses few points one at a time).
+void reduce(Triangulation& best, const NonObtuseParams& params, std::size_t cap, Clock::time_point deadline) {
+  if (deadline == Clock::time_point::max()) return;  // only with a time limit: it runs until it
+  std::mt19937 rng(params.seed * 104729u + 7u);
+  for (std::size_t round = 0; best.n_steiner() > 0; ++round) {
+    const auto now = Clock::now();
+    if (now > deadline || (params.cancel && params.cancel())) break;
+    std::vector<int> live;
+    for (int t = 0; t < best.n_tris(); ++t)
+      if (best.tri(t).alive) live.push_back(t);
+    const int depth = 1 + static_cast<int>(rng() % 4);
+    std::vector<int> region{live[rng() % live.size()]};
+    std::vector<char> seen(static_cast<std::size_t>(best.n_tris()), 0);
+    seen[static_cast<std::size_t>(region[0])] = 1;
+    for (std::size_t head = 0, level_end = 1, level = 0; head < region.size() && level < static_cast<std::size_t>(depth); ++head) {
+      for (int k = 0; k < 3; ++k) {
+        const int u = best.tri(region[head]).n[k];
+        if (u >= 0 && !seen[static_cast<std::size_t>(u)]) {
+          seen[static_cast<std::size_t>(u)] = 1;
+          region.push_back(u);
+        }
+      }
+      if (head + 1 == level_end) ++level, level_end = region.size();
+    }
+    std::vector<int> victims;
+    for (int t : region)
+      for (int v : best.tri(t).v)
+        if (!best.is_required(v)) victims.push_back(v);
+    std::sort(victims.begin(), victims.end());
+    victims.erase(std::unique(victims.begin(), victims.end()), victims.end());
+    if (victims.size() < 2) continue;
+    Triangulation tr = best;
+    tr.begin();
+    for (int v : victims)
+      if (tr.alive_point(v)) tr.remove_vertex(v);
+    tr.commit();
+    NonObtuseParams p = params;
+    p.seed = params.seed + 5000u + static_cast<unsigned>(round);
+    NonObtuseSolver solver(tr, p, std::min(deadline, now + std::chrono::milliseconds(300)));
+    if (solver.refine(cap, true) && tr.n_steiner() < best.n_steiner()) best = std::move(tr);
+  }
+}
+
 }  // namespace
 
 NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtuseParams& params) {
@@ -686,6 +731,9 @@ NonObtuseResult non_obtuse_from_start(const Domain& domain, const Mesh& start, c
   if (ok) {
     NonObtuseSolver pruner(tr, params, deadline);
     pruner.prune();
+    reduce(tr, params, cap, timed ? deadline - (deadline - Clock::now()) / 5 : deadline);
+    NonObtuseSolver again(tr, params, deadline);
+    again.prune();
   }
   result.mesh = tr.to_mesh(cdt, &result.exact);
   result.n_steiner = tr.n_steiner();
