@@ -248,9 +248,10 @@ RepairMeshResult from_non_obtuse(NonObtuseResult nr, const Domain& domain, const
 }
 
 /// A start mesh for the required-points repair holding every input point; notes and r.start set.
-/// time_limit_s > 0 bounds the CVT optimisation.
+/// time_limit_s > 0 bounds the CVT optimisation; budget > 0 the vertices of the refinement (near
+/// small input angles it may not end otherwise).
 Mesh required_start(const Domain& domain, RequiredStart start, const RepairMeshOptions& o, RepairMeshResult& r,
-                    double time_limit_s = 0) {
+                    double time_limit_s = 0, std::size_t budget = 0) {
   notify(o, "cdt");
   CdtStats stats;
   Mesh mesh = build_domain_cdt(domain, CdtOptions{}, &stats);
@@ -261,7 +262,7 @@ Mesh required_start(const Domain& domain, RequiredStart start, const RepairMeshO
     notify(o, "refine");
     RefineParams rp;
     rp.min_angle_deg = 20;
-    rp.max_vertices = o.max_vertices;
+    rp.max_vertices = budget > 0 ? std::min(budget, o.max_vertices) : o.max_vertices;
     refine(mesh, rp);
     r.start = "refine";
   } else if (start == RequiredStart::Cvt) {
@@ -490,7 +491,7 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
       const auto s0 = std::chrono::steady_clock::now();
       RepairMeshResult f;
       f.domain = domain;
-      f.mesh = required_start(domain, fallback, o, f, timed ? 0.25 * share : 0);
+      f.mesh = required_start(domain, fallback, o, f, timed ? 0.25 * share : 0, 40 * domain.points.size() + 1000);
       RepairMeshOptions ro = o;
       ro.time_limit_s = timed ? std::max(0.05, 0.45 * share) : 0;
       run_repair(f, bounds, ro);
