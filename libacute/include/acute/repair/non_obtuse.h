@@ -40,7 +40,9 @@ struct NonObtuseResult {
 /// the best of a few candidate points per triangle (foot of the altitude from the obtuse corner,
 /// exact on a segment; circumcentre when inside the domain and not behind a segment), each
 /// followed by Lawson flips; then Steiner points removed while the triangulation stays
-/// non-obtuse. Every Steiner point is exactly on its segment where it lies on one.
+/// non-obtuse. Attempts in different orders; when all stall, a large-neighbourhood search on the
+/// best one (the Steiner points near an obtuse triangle removed, the refinement rerun). Every
+/// Steiner point is exactly on its segment where it lies on one.
 /// \throws InvalidInput for an invalid domain (as build_cdt).
 NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtuseParams& params = {});
 
@@ -50,7 +52,8 @@ NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtusePa
 /// see RequiredStart). Steiner points on a segment are first moved exactly onto it, then the
 /// obtuse triangles left are fixed and Steiner points removed while nothing becomes obtuse.
 /// Result `ok` false with an empty mesh when the start does not fit (a point missing or moved,
-/// or a triangle folded by the move onto a segment).
+/// or a triangle folded by the move onto a segment). With a time limit, a success is also
+/// reduced by large neighbourhoods (a patch's Steiner points removed, kept when refilled with fewer).
 NonObtuseResult non_obtuse_from_start(const Domain& domain, const Mesh& start, const NonObtuseParams& params = {});
 
 }  // namespace acute
