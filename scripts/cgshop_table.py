@@ -8,6 +8,9 @@ with meshcheck, and print the Steiner points per instance next to the best known
 A row counts as valid when meshcheck exits 0 with the instance as domain and bounds
 --min-angle 0 --max-angle 90.000001 (right angles allowed). The total ratio is over the
 instances where we have a valid result; instances without one are listed separately.
+meshcheck decides angles on doubles with a tolerance, so a triangle obtuse by less than it passes:
+the line "valid and exactly non-obtuse" also needs acute's exact count to be 0 (the CG:SHOP
+criterion). Then per instance class and per start (which stage of `acute repair` produced it).
 """
 import argparse
 import csv
@@ -119,6 +122,30 @@ def main():
         eo, ek = sum(r["steiner"] for r in exact), sum(best[r["uid"]] for r in exact)
         print(f"valid and exactly non-obtuse (acute's exact count 0 as well): {len(exact)}; "
               f"Steiner points ours {eo}, best known {ek}, ratio {eo / ek:.2f}")
+    # Per class (the uid prefix before the size): valid count and Steiner ratio on the valid ones.
+    classes = {}
+    for rec in results:
+        c = classes.setdefault(rec["uid"].rsplit("_", 2)[0], [0, 0, 0, 0])
+        c[0] += 1
+        b, s = best.get(rec["uid"]), rec.get("steiner")
+        if rec.get("meshcheck_rc") == 0 and s is not None and b is not None:
+            c[1] += 1
+            c[2] += s
+            c[3] += b
+    for name, (n, v, s, b) in sorted(classes.items()):
+        print(f"  {name}: valid {v}/{n}" + (f", Steiner ours {s}, best known {b}, ratio {s / b:.2f}" if b else ""))
+    starts = {}
+    for rec in results:
+        b, s = best.get(rec["uid"]), rec.get("steiner")
+        if rec.get("meshcheck_rc") == 0 and s is not None and b is not None:
+            st = starts.setdefault(rec.get("start") or "-", [0, 0, 0])
+            st[0] += 1
+            st[1] += s
+            st[2] += b
+    for name, (v, s, b) in sorted(starts.items()):
+        print(f"  valid from start {name}: {v}, Steiner ours {s}, best known {b}, ratio {s / b:.2f}")
+    if not args.table_only:
+        print(f"acute --time-limit {args.time_limit} s per instance (wall-clock kill after {args.timeout} s)")
     by_rc = {}
     for rec in results:
         by_rc[str(rec.get("meshcheck_rc"))] = by_rc.get(str(rec.get("meshcheck_rc")), 0) + 1

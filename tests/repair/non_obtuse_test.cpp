@@ -1,8 +1,13 @@
 // Non-obtuse Steiner triangulation with required points: validity, every input point kept
 // exactly, segments covered, and no obtuse angle, decided on the exact rational coordinates.
+#include <acute/delaunay/cdt.h>
 #include <acute/io/io.h>
+#include <acute/mesher.h>
 #include <acute/mesh/check.h>
+#include <acute/mesh/segments.h>
+#include <acute/refine/refine.h>
 #include <acute/repair/non_obtuse.h>
+#include <acute/repair/repair.h>
 
 #include <gmpxx.h>
 #include "support/cgshop_samples.h"
@@ -102,6 +107,56 @@ TEST(NonObtuse, small_cgshop_instances_become_non_obtuse) {
     ++n;
   }
   EXPECT_GE(n, 1);
+}
+
+/// A start holding every input point: Delaunay refinement, then the acute repair with max 90
+/// (right angles allowed), as the required-points fallback makes it.
+Mesh repaired_start(const Domain& d) {
+  Mesh m = build_domain_cdt(d);  // with its segment table, as the repair needs
+  RefineParams rp;
+  rp.min_angle_deg = 20;
+  refine(m, rp);
+  RepairParams params;
+  params.bounds.min_deg = 0;
+  params.bounds.max_deg = 90.0 + 1e-6;
+  repair_acute(m, params);
+  SegmentTable table = segment_table(m);
+  Mesh out = compacted(m);
+  set_segment_table(out, std::move(table));
+  return out;
+}
+
+// Point sets on which the search from the CDT stalls with obtuse triangles left (within 10 s):
+// from the repaired start every input point is kept and nothing is obtuse, exactly.
+TEST(NonObtuse, repaired_start_is_finished_exactly_and_pruned) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(ACUTE_SHARED_DIR) / "domains" / "cgshop2025" / "instances";
+  int n = 0;
+  for (const char* uid : {"point-set_10_7451a2a9", "point-set_10_f999dc7f"}) {
+    const fs::path path = dir / (std::string(uid) + ".instance.json");
+    if (!fs::exists(path)) continue;
+    const Domain d = io::read_cgshop(path.string());
+    const Mesh start = repaired_start(d);
+    const std::size_t start_steiner = start.n_vertices() - d.points.size();
+    const NonObtuseResult r = non_obtuse_from_start(d, start);
+    expect_conforming(d, r, uid);
+    EXPECT_TRUE(r.ok) << uid << ": " << r.n_obtuse << " obtuse, " << r.n_steiner << " Steiner";
+    EXPECT_EQ(exact_obtuse(r), 0u) << uid;
+    EXPECT_LT(r.n_steiner, start_steiner) << uid << ": pruning removes Steiner points of the start";
+    ++n;
+  }
+  if (n == 0) GTEST_SKIP() << "the shared CG:SHOP instances are absent";
+}
+
+TEST(NonObtuse, start_without_every_input_point_is_refused) {
+  Domain d;
+  d.points = {Point2(0, 0), Point2(10, 0), Point2(10, 10), Point2(0, 10), Point2(4, 3)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  Domain without = d;
+  without.points.pop_back();  // the interior point is missing from the start
+  const NonObtuseResult r = non_obtuse_from_start(d, build_cdt(without));
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.mesh.n_vertices(), 0u);
 }
 
 }  // namespace

@@ -24,7 +24,9 @@ struct RepairMeshProgress {
 /// The start of the required-points repair.
 enum class RequiredStart {
   /// With allow_right: the dedicated non-obtuse Steiner triangulation (non_obtuse_triangulation,
-  /// exact rationals; its best result is returned even when obtuse triangles remain). Without:
+  /// exact rationals); when it leaves obtuse triangles, Refine then Cvt made non-obtuse by the
+  /// acute repair and finished and pruned exactly (non_obtuse_from_start); the first exactly
+  /// non-obtuse result is returned, else the one with fewest obtuse triangles. Without:
   /// Cdt, then Refine, then Cvt until one meets the bound (fewest Steiner points first)
   Auto,
   Cdt,     ///< the bare constrained Delaunay triangulation of the points
@@ -99,7 +101,8 @@ Domain repair_domain(const Mesh& mesh, const RepairMeshOptions& options, std::ve
 RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options = {});
 
 /// Required-points mode on a domain (e.g. a CG:SHOP instance). With allow_right and
-/// RequiredStart::Auto: non_obtuse_triangulation (exact; result.exact_coordinates set). Else a
+/// RequiredStart::Auto: the exact non-obtuse solver and its fallbacks (see RequiredStart::Auto;
+/// result.exact_coordinates set; 40% of the time limit for the CDT search). Else a
 /// start mesh holding every input point (options.start), then the repair with min 0, max 90.
 /// With RequiredStart::Auto the starts are tried in order of cost in Steiner points, each with a
 /// share of the time limit, until one meets the bound exactly; else the one with fewest bad triangles.

@@ -228,6 +228,65 @@ std::size_t prune_steiner(Mesh& mesh, const AngleBounds& bounds, const RepairMes
   return removed;
 }
 
+/// A required-points result from the exact non-obtuse solver (angles decided on its exact points).
+RepairMeshResult from_non_obtuse(NonObtuseResult nr, const Domain& domain, const AngleBounds& bounds,
+                                 const RepairMeshOptions& o, const std::string& start) {
+  RepairMeshResult r;
+  r.domain = domain;
+  r.n_input_vertices = domain.points.size();
+  r.mesh = std::move(nr.mesh);
+  r.start = start;
+  r.iterations = static_cast<int>(nr.rounds);
+  finish(r, bounds, o, true, false);  // no deleted elements: vertex indices are kept
+  r.exact_coordinates = std::move(nr.exact);
+  r.n_obtuse_exact = nr.n_obtuse;  // decided on the exact points, not their doubles
+  r.n_right_exact = nr.n_right;
+  r.n_bad = nr.n_obtuse;
+  r.remaining.resize(std::min(r.remaining.size(), r.n_bad));
+  r.status = nr.ok ? RepairMeshStatus::Ok : RepairMeshStatus::BoundsNotMet;
+  return r;
+}
+
+/// A start mesh for the required-points repair holding every input point; notes and r.start set.
+/// time_limit_s > 0 bounds the CVT optimisation; budget > 0 the vertices of the refinement (near
+/// small input angles it may not end otherwise).
+Mesh required_start(const Domain& domain, RequiredStart start, const RepairMeshOptions& o, RepairMeshResult& r,
+                    double time_limit_s = 0, std::size_t budget = 0) {
+  notify(o, "cdt");
+  CdtStats stats;
+  Mesh mesh = build_domain_cdt(domain, CdtOptions{}, &stats);
+  for (const auto& w : stats.warnings) r.notes.push_back(w);
+  if (stats.dropped_points > 0)
+    r.notes.push_back(std::to_string(stats.dropped_points) + " input point(s) outside the region dropped");
+  if (start == RequiredStart::Refine) {
+    notify(o, "refine");
+    RefineParams rp;
+    rp.min_angle_deg = 20;
+    rp.max_vertices = budget > 0 ? std::min(budget, o.max_vertices) : o.max_vertices;
+    refine(mesh, rp);
+    r.start = "refine";
+  } else if (start == RequiredStart::Cvt) {
+    notify(o, "cvt");
+    CvtParams cp;
+    cp.graded = true;
+    cp.seed = o.seed;
+    cp.time_limit_s = time_limit_s;
+    mesh = cvt_mesh(domain, cp).mesh;
+    r.start = "cvt";
+  } else {
+    r.start = "cdt";
+  }
+  return mesh;
+}
+
+/// The mesh without deleted elements, its segment table kept.
+Mesh compacted_mesh(const Mesh& mesh) {
+  SegmentTable table = segment_table(mesh);
+  Mesh out = compacted(mesh);
+  set_segment_table(out, std::move(table));
+  return out;
+}
+
 }  // namespace
 
 const char* to_string(RepairMeshStatus status) {
@@ -412,59 +471,49 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
   RepairMeshResult best;
   bool have = false;
   if (o.start == RequiredStart::Auto && o.allow_right) {
-    // Right angles allowed: the dedicated non-obtuse triangulation on exact rationals.
-    notify(o, "non-obtuse");
+    // Right angles allowed: the dedicated non-obtuse triangulation on exact rationals, from the
+    // CDT (fewest Steiner points). When it stalls with obtuse triangles left: a start that
+    // already holds every input point (Delaunay refinement, then CVT) made non-obtuse by the
+    // acute repair, its last obtuse triangles fixed and its Steiner points pruned exactly.
+    const bool timed = o.time_limit_s > 0;
+    auto left = [&] {
+      return o.time_limit_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
     NonObtuseParams np;
-    np.time_limit_s = o.time_limit_s;
+    np.time_limit_s = timed ? 0.4 * o.time_limit_s : 0;
     np.seed = o.seed;
     np.cancel = o.cancel;
-    NonObtuseResult nr = non_obtuse_triangulation(domain, np);
-    RepairMeshResult r;
-    r.domain = domain;
-    r.n_input_vertices = domain.points.size();
-    r.mesh = std::move(nr.mesh);
-    r.start = "non-obtuse";
-    r.iterations = static_cast<int>(nr.rounds);
-    finish(r, bounds, o, true, false);  // no deleted elements: vertex indices are kept
-    r.exact_coordinates = std::move(nr.exact);
-    r.n_obtuse_exact = nr.n_obtuse;  // decided on the exact points, not their doubles
-    r.n_right_exact = nr.n_right;
-    r.n_bad = nr.n_obtuse;
-    r.remaining.resize(std::min(r.remaining.size(), r.n_bad));
-    r.status = nr.ok ? RepairMeshStatus::Ok : RepairMeshStatus::BoundsNotMet;
-    // No fallback to the acute repair starts: they overrun the time limit and were never better
-    // on the CG:SHOP instances; the best triangulation found is returned with its obtuse count.
-    if (!nr.ok)
-      r.notes.push_back("the non-obtuse triangulation left " + std::to_string(nr.n_obtuse) + " obtuse triangle(s)");
+    notify(o, "non-obtuse");
+    RepairMeshResult r = from_non_obtuse(non_obtuse_triangulation(domain, np), domain, bounds, o, "non-obtuse");
+    for (RequiredStart fallback : {RequiredStart::Refine, RequiredStart::Cvt}) {
+      if (r.status == RepairMeshStatus::Ok || (o.cancel && o.cancel()) || (timed && left() <= 0)) break;
+      const double share = timed ? left() / (fallback == RequiredStart::Refine ? 2.0 : 1.0) : 0;
+      const auto s0 = std::chrono::steady_clock::now();
+      RepairMeshResult f;
+      f.domain = domain;
+      f.mesh = required_start(domain, fallback, o, f, timed ? 0.25 * share : 0, 40 * domain.points.size() + 1000);
+      RepairMeshOptions ro = o;
+      ro.time_limit_s = timed ? std::max(0.05, 0.45 * share) : 0;
+      run_repair(f, bounds, ro);
+      notify(o, "non-obtuse");
+      // Fixing gets what is left of this start's share; pruning a success all the time left.
+      np.refine_time_s = timed ? std::max(0.05, share - std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count()) : 0;
+      np.time_limit_s = timed ? std::max(np.refine_time_s, left()) : 0;
+      NonObtuseResult nr = non_obtuse_from_start(domain, compacted_mesh(f.mesh), np);
+      if (nr.mesh.n_vertices() == 0) continue;  // the start did not fit
+      RepairMeshResult g = from_non_obtuse(std::move(nr), domain, bounds, o, f.start + "+non-obtuse");
+      g.iterations += f.iterations;
+      if (g.status == RepairMeshStatus::Ok || g.n_obtuse_exact < r.n_obtuse_exact) r = std::move(g);
+    }
+    if (r.status != RepairMeshStatus::Ok)
+      r.notes.push_back("the non-obtuse triangulation left " + std::to_string(r.n_obtuse_exact) + " obtuse triangle(s)");
     return r;
   }
   for (std::size_t k = 0; k < starts.size(); ++k) {
     RepairMeshResult r;
     r.domain = domain;
     r.n_input_vertices = domain.points.size();
-    notify(o, "cdt");
-    CdtStats stats;
-    r.mesh = build_domain_cdt(domain, CdtOptions{}, &stats);
-    for (const auto& w : stats.warnings) r.notes.push_back(w);
-    if (stats.dropped_points > 0)
-      r.notes.push_back(std::to_string(stats.dropped_points) + " input point(s) outside the region dropped");
-    if (starts[k] == RequiredStart::Refine) {
-      notify(o, "refine");
-      RefineParams rp;
-      rp.min_angle_deg = 20;
-      rp.max_vertices = o.max_vertices;
-      refine(r.mesh, rp);
-      r.start = "refine";
-    } else if (starts[k] == RequiredStart::Cvt) {
-      notify(o, "cvt");
-      CvtParams cp;
-      cp.graded = true;
-      cp.seed = o.seed;
-      r.mesh = cvt_mesh(domain, cp).mesh;
-      r.start = "cvt";
-    } else {
-      r.start = "cdt";
-    }
+    r.mesh = required_start(domain, starts[k], o, r);
     // Each start gets an equal share of what is left of the time limit.
     RepairMeshOptions ok = o;
     if (o.time_limit_s > 0) {

@@ -72,15 +72,92 @@ int incircle(const XPoint& a, const XPoint& b, const XPoint& c, const XPoint& d)
 // --- conversion -------------------------------------------------------------------------------
 
 Triangulation Triangulation::from_mesh(const Mesh& mesh) {
-  Triangulation tr;
-  tr.pts_.reserve(mesh.n_vertices());
+  std::vector<int> slot(mesh.n_vertices());
+  std::vector<XPoint> pts;
+  pts.reserve(mesh.n_vertices());
   for (auto vh : mesh.vertices()) {
     const auto& p = mesh.point(vh);
-    tr.pts_.emplace_back(Q(p[0]), Q(p[1]));
+    slot[static_cast<std::size_t>(vh.idx())] = static_cast<int>(pts.size());
+    pts.emplace_back(Q(p[0]), Q(p[1]));
   }
+  Triangulation tr;
+  const int n = static_cast<int>(pts.size());
+  tr.build(mesh, slot, std::move(pts), n);
+  return tr;
+}
+
+bool Triangulation::from_start(const Mesh& cdt, const Mesh& start, const SegmentTable& table, Triangulation& out) {
+  // Required points first, in the CDT's order (to_mesh copies their data from it).
+  std::vector<int> cdt_of_input;
+  for (auto vh : cdt.vertices()) {
+    const int i = cdt.data(vh).input_index;
+    if (i < 0) return false;
+    if (static_cast<std::size_t>(i) >= cdt_of_input.size()) cdt_of_input.resize(static_cast<std::size_t>(i) + 1, -1);
+    cdt_of_input[static_cast<std::size_t>(i)] = vh.idx();
+  }
+  std::vector<XPoint> pts(cdt.n_vertices());
+  for (auto vh : cdt.vertices()) {
+    const auto& p = cdt.point(vh);
+    pts[static_cast<std::size_t>(vh.idx())] = XPoint(Q(p[0]), Q(p[1]));
+  }
+  std::vector<int> slot(start.n_vertices(), -1);
+  std::vector<char> found(cdt.n_vertices(), 0);
+  for (auto vh : start.vertices()) {
+    const auto& d = start.data(vh);
+    if (d.kind != VertexKind::Input) continue;
+    const int i = d.input_index;
+    if (i < 0 || static_cast<std::size_t>(i) >= cdt_of_input.size() || cdt_of_input[static_cast<std::size_t>(i)] < 0) return false;
+    const int c = cdt_of_input[static_cast<std::size_t>(i)];
+    const auto& p = start.point(vh);
+    if (p[0] != cdt.point(VertexHandle(c))[0] || p[1] != cdt.point(VertexHandle(c))[1] || found[static_cast<std::size_t>(c)]) return false;
+    found[static_cast<std::size_t>(c)] = 1;
+    slot[static_cast<std::size_t>(vh.idx())] = c;
+  }
+  if (std::find(found.begin(), found.end(), 0) != found.end()) return false;
+  for (auto vh : start.vertices()) {
+    if (slot[static_cast<std::size_t>(vh.idx())] >= 0) continue;
+    const auto& p = start.point(vh);
+    // The segment it lies on, from its constrained edges (the kinds need not say).
+    int seg = -1;
+    for (auto h : start.voh_range(vh))
+      if (start.data(start.edge_handle(h)).segment >= 0) seg = start.data(start.edge_handle(h)).segment;
+    XPoint x{Q(p[0]), Q(p[1])};
+    if (seg >= 0 && static_cast<std::size_t>(seg) < table.size()) {
+      // Exactly on the segment (the doubles are only near a slanted one): a + t (b - a) with
+      // t the rounded parameter of the nearest point, so the rational stays short.
+      const Point2 &a = table[static_cast<std::size_t>(seg)][0], &b = table[static_cast<std::size_t>(seg)][1];
+      const Point2 ab = b - a;
+      if (ab.x() == 0) {
+        x = XPoint(Q(a.x()), Q(p[1]));
+      } else if (ab.y() == 0) {
+        x = XPoint(Q(p[0]), Q(a.y()));
+      } else {
+        const double t = ((p[0] - a.x()) * ab.x() + (p[1] - a.y()) * ab.y()) / ab.squaredNorm();
+        if (!(t > 0 && t < 1)) return false;
+        const Q qt(t);
+        x = XPoint(Q(a.x()) + qt * Q(ab.x()), Q(a.y()) + qt * Q(ab.y()));
+      }
+    }
+    slot[static_cast<std::size_t>(vh.idx())] = static_cast<int>(pts.size());
+    pts.push_back(std::move(x));
+  }
+  Triangulation tr;
+  tr.build(start, slot, std::move(pts), static_cast<int>(cdt.n_vertices()));
+  for (const Tri& t : tr.tris_)
+    if (orient(tr.point(t.v[0]), tr.point(t.v[1]), tr.point(t.v[2])) <= 0) return false;  // projection folded a triangle
+  for (std::size_t v = 0; v < tr.vtri_.size(); ++v)
+    if (tr.vtri_[v] < 0) return false;  // a point of the CDT not in the start mesh
+  out = std::move(tr);
+  return true;
+}
+
+void Triangulation::build(const Mesh& mesh, const std::vector<int>& vslot, std::vector<XPoint> pts, int n_required) {
+  Triangulation& tr = *this;
+  tr.pts_ = std::move(pts);
   tr.alive_.assign(tr.pts_.size(), 1);
   tr.vtri_.assign(tr.pts_.size(), -1);
-  tr.n_required_ = static_cast<int>(tr.pts_.size());
+  tr.n_required_ = n_required;
+  tr.n_steiner_ = tr.pts_.size() - static_cast<std::size_t>(n_required);
   std::vector<int> slot(mesh.n_faces(), -1);
   for (auto fh : mesh.faces()) {
     slot[static_cast<std::size_t>(fh.idx())] = static_cast<int>(tr.tris_.size());
@@ -90,7 +167,7 @@ Triangulation Triangulation::from_mesh(const Mesh& mesh) {
     Tri& t = tr.tris_[static_cast<std::size_t>(slot[static_cast<std::size_t>(fh.idx())])];
     auto h = mesh.halfedge_handle(fh);
     std::array<Mesh::HalfedgeHandle, 3> hs{h, mesh.next_halfedge_handle(h), mesh.next_halfedge_handle(mesh.next_halfedge_handle(h))};
-    for (int i = 0; i < 3; ++i) t.v[i] = mesh.from_vertex_handle(hs[i]).idx();
+    for (int i = 0; i < 3; ++i) t.v[i] = vslot[static_cast<std::size_t>(mesh.from_vertex_handle(hs[i]).idx())];
     // hs[i] runs v[i] -> v[i+1]: the edge opposite v[i+2].
     for (int i = 0; i < 3; ++i) {
       const int k = (i + 2) % 3;
@@ -109,7 +186,6 @@ Triangulation Triangulation::from_mesh(const Mesh& mesh) {
     for (int i = 0; i < 3; ++i) tr.vtri_[static_cast<std::size_t>(t.v[i])] = slot[static_cast<std::size_t>(fh.idx())];
   }
   tr.stamp_.assign(tr.tris_.size(), 0);
-  return tr;
 }
 
 Mesh Triangulation::to_mesh(const Mesh& like, std::vector<std::array<std::string, 2>>* exact) const {

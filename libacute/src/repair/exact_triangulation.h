@@ -5,6 +5,7 @@
 #pragma once
 
 #include <acute/mesh/mesh.h>
+#include <acute/mesh/segments.h>
 
 #include <gmpxx.h>
 
@@ -45,6 +46,12 @@ class Triangulation {
  public:
   /// From a constrained triangulation (build_cdt): its vertices are the required points.
   static Triangulation from_mesh(const Mesh& mesh);
+  /// From a mesh holding every vertex of `cdt` (same input_index, same position) plus Steiner
+  /// points, constraint data and segment table set (e.g. a repaired mesh): the CDT's vertices
+  /// are the required points, in its order (to_mesh(cdt, ...) then works); Steiner points on a
+  /// segment (endpoints by segment id in `segments`) are moved exactly onto it. False when the
+  /// start does not fit (a CDT point missing, or a triangle folded by that move).
+  static bool from_start(const Mesh& cdt, const Mesh& start, const SegmentTable& segments, Triangulation& out);
   /// Live part as a Mesh (kinds, input indices, segment ids and table as in `like`); exact
   /// coordinates per output vertex into *exact.
   Mesh to_mesh(const Mesh& like, std::vector<std::array<std::string, 2>>* exact) const;
@@ -91,6 +98,7 @@ class Triangulation {
   struct Mark {
     std::size_t tlog, vlog, alog, ntris, npts, nsteiner;
   };
+  void build(const Mesh& mesh, const std::vector<int>& vertex_slot, std::vector<XPoint> pts, int n_required);
   void set_tri(int t, const Tri& value);
   void set_vtri(int v, int t);
   void set_alive(int v, char a);

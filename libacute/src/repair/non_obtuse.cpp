@@ -523,6 +523,102 @@ class NonObtuseSolver {
   std::mt19937 rng_;
 };
 
+/// Large-neighbourhood search on a stalled triangulation: the Steiner points within a few
+/// triangles of one of its obtuse triangles removed and the refinement run again from there (the
+/// greedy search gets stuck in a local arrangement it will not undo); a round is kept when it
+/// leaves fewer obtuse triangles, or as many with hardly more points (drift across a plateau).
+/// True when no obtuse triangle is left.
+bool unstick(Triangulation& best, const NonObtuseParams& params, std::size_t cap, Clock::time_point deadline,
+             std::size_t max_rounds) {
+  std::mt19937 rng(params.seed * 7919u + 13u);
+  const bool timed = deadline != Clock::time_point::max();
+  for (std::size_t round = 0; round < max_rounds && best.n_obtuse() > 0; ++round) {
+    const auto now = Clock::now();
+    if (now > deadline || (params.cancel && params.cancel())) break;
+    std::vector<int> bad;
+    for (int t = 0; t < best.n_tris(); ++t)
+      if (best.tri(t).alive && best.is_obtuse(best.tri(t))) bad.push_back(t);
+    const int depth = 1 + static_cast<int>(rng() % 5);
+    std::vector<int> region{bad[rng() % bad.size()]};
+    std::vector<char> seen(static_cast<std::size_t>(best.n_tris()), 0);
+    seen[static_cast<std::size_t>(region[0])] = 1;
+    for (std::size_t head = 0, level_end = 1, level = 0; head < region.size() && level < static_cast<std::size_t>(depth); ++head) {
+      for (int k = 0; k < 3; ++k) {
+        const int u = best.tri(region[head]).n[k];
+        if (u >= 0 && !seen[static_cast<std::size_t>(u)]) {
+          seen[static_cast<std::size_t>(u)] = 1;
+          region.push_back(u);
+        }
+      }
+      if (head + 1 == level_end) ++level, level_end = region.size();
+    }
+    std::vector<int> victims;
+    for (int t : region)
+      for (int v : best.tri(t).v)
+        if (!best.is_required(v)) victims.push_back(v);
+    std::sort(victims.begin(), victims.end());
+    victims.erase(std::unique(victims.begin(), victims.end()), victims.end());
+    Triangulation tr = best;
+    tr.begin();
+    for (int v : victims)
+      if (tr.alive_point(v)) tr.remove_vertex(v);
+    tr.commit();
+    NonObtuseParams p = params;
+    p.seed = params.seed + 1000u + static_cast<unsigned>(round);
+    NonObtuseSolver solver(tr, p, timed ? now + (deadline - now) / 3 : deadline);
+    const bool ok = solver.refine(cap, true);
+    if (ok || tr.n_obtuse() < best.n_obtuse() || (tr.n_obtuse() == best.n_obtuse() && tr.n_steiner() <= best.n_steiner() + 2))
+      best = std::move(tr);
+    if (ok) return true;
+  }
+  return best.n_obtuse() == 0;
+}
+
+/// Steiner points fewer by large neighbourhoods: all Steiner points within a few triangles of a
+/// random one removed and the refinement rerun from there; kept when the result is non-obtuse
+/// with fewer points (a dense start, as a repaired CVT mesh, loses few points one at a time).
+void reduce(Triangulation& best, const NonObtuseParams& params, std::size_t cap, Clock::time_point deadline) {
+  if (deadline == Clock::time_point::max()) return;  // only with a time limit: it runs until it
+  std::mt19937 rng(params.seed * 104729u + 7u);
+  for (std::size_t round = 0; best.n_steiner() > 0; ++round) {
+    const auto now = Clock::now();
+    if (now > deadline || (params.cancel && params.cancel())) break;
+    std::vector<int> live;
+    for (int t = 0; t < best.n_tris(); ++t)
+      if (best.tri(t).alive) live.push_back(t);
+    const int depth = 1 + static_cast<int>(rng() % 4);
+    std::vector<int> region{live[rng() % live.size()]};
+    std::vector<char> seen(static_cast<std::size_t>(best.n_tris()), 0);
+    seen[static_cast<std::size_t>(region[0])] = 1;
+    for (std::size_t head = 0, level_end = 1, level = 0; head < region.size() && level < static_cast<std::size_t>(depth); ++head) {
+      for (int k = 0; k < 3; ++k) {
+        const int u = best.tri(region[head]).n[k];
+        if (u >= 0 && !seen[static_cast<std::size_t>(u)]) {
+          seen[static_cast<std::size_t>(u)] = 1;
+          region.push_back(u);
+        }
+      }
+      if (head + 1 == level_end) ++level, level_end = region.size();
+    }
+    std::vector<int> victims;
+    for (int t : region)
+      for (int v : best.tri(t).v)
+        if (!best.is_required(v)) victims.push_back(v);
+    std::sort(victims.begin(), victims.end());
+    victims.erase(std::unique(victims.begin(), victims.end()), victims.end());
+    if (victims.size() < 2) continue;
+    Triangulation tr = best;
+    tr.begin();
+    for (int v : victims)
+      if (tr.alive_point(v)) tr.remove_vertex(v);
+    tr.commit();
+    NonObtuseParams p = params;
+    p.seed = params.seed + 5000u + static_cast<unsigned>(round);
+    NonObtuseSolver solver(tr, p, std::min(deadline, now + std::chrono::milliseconds(300)));
+    if (solver.refine(cap, true) && tr.n_steiner() < best.n_steiner()) best = std::move(tr);
+  }
+}
+
 }  // namespace
 
 NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtuseParams& params) {
@@ -547,11 +643,12 @@ NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtusePa
     const auto now = Clock::now();
     if (attempt > 0 && (now > deadline || (params.cancel && params.cancel()))) break;
     if (successes >= 4 || (successes >= 1 && (!timed || now - t0 > (deadline - t0) / 2))) break;
+    if (!best_ok && timed && now - t0 > (deadline - t0) * 6 / 10) break;  // the rest for unstick()
     Triangulation tr = Triangulation::from_mesh(cdt);
     NonObtuseParams p = params;
     p.seed = params.seed + attempt;
     // The first attempt gets most of the time (its plateau search does finish, slowly).
-    const auto share = timed ? now + (attempt == 0 ? (deadline - now) * 3 / 4 : (deadline - now) / 2) : deadline;
+    const auto share = timed ? now + (attempt == 0 ? (deadline - now) / 2 : (deadline - now) / 3) : deadline;
     NonObtuseSolver solver(tr, p, share);
     ++result.rounds;
     if (solver.refine(cap, attempt > 0)) {
@@ -568,11 +665,80 @@ NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtusePa
       best = std::move(tr);
     }
   }
-  (void)best_ok;
+  if (!best_ok && !(params.cancel && params.cancel())) {
+    // Every attempt stalled: work on the one with fewest obtuse triangles left, then prune it.
+    const auto lns_end = timed ? t0 + (deadline - t0) * 9 / 10 : deadline;
+    best_ok = unstick(best, params, cap, lns_end, timed ? 100000 : 200);
+    if (best_ok) {
+      result.n_refined = best.n_steiner();
+      NonObtuseSolver pruner(best, params, deadline);
+      pruner.prune();
+    }
+  }
   result.mesh = best.to_mesh(cdt, &result.exact);
   result.n_steiner = best.n_steiner();
   result.n_obtuse = best.n_obtuse();
   result.n_right = best.n_right();
+  result.ok = result.n_obtuse == 0;
+  return result;
+}
+
+NonObtuseResult non_obtuse_from_start(const Domain& domain, const Mesh& start, const NonObtuseParams& params) {
+  const auto t0 = Clock::now();
+  const bool timed = params.time_limit_s > 0;
+  const auto deadline = timed ? t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(params.time_limit_s))
+                              : Clock::time_point::max();
+  const Mesh cdt = build_cdt(domain);
+  NonObtuseResult result;
+  Triangulation tr;
+  SegmentTable segments;  // by segment id: the domain's segments
+  for (const auto& sg : domain.segments)
+    segments.push_back({domain.points[static_cast<std::size_t>(sg[0])], domain.points[static_cast<std::size_t>(sg[1])]});
+  if (!Triangulation::from_start(cdt, start, segments, tr)) {
+    result.n_obtuse = static_cast<std::size_t>(-1);
+    return result;
+  }
+  // The start has far more Steiner points than a CDT attempt needs: the cap grows with it.
+  const std::size_t cap = std::max(params.max_steiner > 0 ? params.max_steiner : 60 * domain.points.size() + 2000,
+                                   2 * tr.n_steiner() + 100);
+  ++result.rounds;
+  bool ok = tr.n_obtuse() == 0;
+  if (!ok) {
+    // A few attempts in different orders, each from the start (a failed one may leave more).
+    const Triangulation initial = tr;
+    const auto fix_deadline =
+        !timed ? deadline
+               : params.refine_time_s > 0
+                     ? std::min(deadline, t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(params.refine_time_s)))
+                     : t0 + (deadline - t0) / 2;
+    for (unsigned attempt = 0; attempt < 3 && !ok; ++attempt) {
+      if (attempt > 0) {
+        if (Clock::now() > fix_deadline || (params.cancel && params.cancel())) break;
+        tr = initial;
+        ++result.rounds;
+      }
+      NonObtuseParams p = params;
+      p.seed = params.seed + attempt;
+      NonObtuseSolver solver(tr, p, timed ? Clock::now() + (fix_deadline - Clock::now()) / 2 : deadline);
+      ok = solver.refine(cap, attempt > 0);
+    }
+    if (!ok) {  // the attempt with fewest obtuse triangles, worked on locally
+      if (tr.n_obtuse() > initial.n_obtuse()) tr = initial;
+      ok = unstick(tr, params, cap, fix_deadline, timed ? 100000 : 50);
+    }
+  }
+  result.n_refined = tr.n_steiner();
+  if (ok) {
+    NonObtuseSolver pruner(tr, params, deadline);
+    pruner.prune();
+    reduce(tr, params, cap, timed ? deadline - (deadline - Clock::now()) / 5 : deadline);
+    NonObtuseSolver again(tr, params, deadline);
+    again.prune();
+  }
+  result.mesh = tr.to_mesh(cdt, &result.exact);
+  result.n_steiner = tr.n_steiner();
+  result.n_obtuse = tr.n_obtuse();
+  result.n_right = tr.n_right();
   result.ok = result.n_obtuse == 0;
   return result;
 }
