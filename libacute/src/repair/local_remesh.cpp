@@ -22,13 +22,6 @@ double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
   return (p - (a + t * d)).norm();
 }
 
-void restore_all(Mesh& sub) {
-  std::vector<EdgeHandle> queue;
-  for (auto eh : sub.edges())
-    if (!sub.status(eh).deleted()) queue.push_back(eh);
-  restore_delaunay(sub, queue);
-}
-
 /// Divides constrained, non-frozen edges longer than 1.5 h into equal pieces of about h.
 bool divide_segments(Mesh& sub, double h) {
   std::vector<std::array<VertexHandle, 2>> long_edges;
@@ -274,7 +267,7 @@ bool rebuild_sector(Mesh& sub, VertexHandle apex, const Sector& sector, int ring
     for (auto fh : sub.vf_range(apex))
       if (insert_point(sub, q, fh).is_valid()) break;
   }
-  restore_all(sub);
+  make_delaunay(sub);
   return true;
 }
 
@@ -304,7 +297,7 @@ bool remesh_region(Mesh& sub, double h, std::uint32_t seed) {
   std::mt19937 rng(seed);
   divide_segments(sub, h);
   scatter_interior(sub, h, rng);
-  restore_all(sub);
+  make_delaunay(sub);
   lloyd_sweeps(sub, 4);
   return true;
 }

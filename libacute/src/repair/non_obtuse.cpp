@@ -523,6 +523,35 @@ class NonObtuseSolver {
   std::mt19937 rng_;
 };
 
+/// Removes the Steiner points of the triangles within `depth` steps (across edges) of triangle
+/// `centre`: the large neighbourhood that unstick and reduce rebuild. Returns how many went.
+std::size_t without_steiner_near(Triangulation& tr, int centre, int depth) {
+  std::vector<int> region{centre};
+  std::vector<char> seen(static_cast<std::size_t>(tr.n_tris()), 0);
+  seen[static_cast<std::size_t>(centre)] = 1;
+  for (std::size_t head = 0, level_end = 1, level = 0; head < region.size() && level < static_cast<std::size_t>(depth); ++head) {
+    for (int k = 0; k < 3; ++k) {
+      const int u = tr.tri(region[head]).n[k];
+      if (u >= 0 && !seen[static_cast<std::size_t>(u)]) {
+        seen[static_cast<std::size_t>(u)] = 1;
+        region.push_back(u);
+      }
+    }
+    if (head + 1 == level_end) ++level, level_end = region.size();
+  }
+  std::vector<int> victims;
+  for (int t : region)
+    for (int v : tr.tri(t).v)
+      if (!tr.is_required(v)) victims.push_back(v);
+  std::sort(victims.begin(), victims.end());
+  victims.erase(std::unique(victims.begin(), victims.end()), victims.end());
+  tr.begin();
+  for (int v : victims)
+    if (tr.alive_point(v)) tr.remove_vertex(v);
+  tr.commit();
+  return victims.size();
+}
+
 /// Large-neighbourhood search on a stalled triangulation: the Steiner points within a few
 /// triangles of one of its obtuse triangles removed and the refinement run again from there (the
 /// greedy search gets stuck in a local arrangement it will not undo); a round is kept when it
@@ -539,30 +568,9 @@ bool unstick(Triangulation& best, const NonObtuseParams& params, std::size_t cap
     for (int t = 0; t < best.n_tris(); ++t)
       if (best.tri(t).alive && best.is_obtuse(best.tri(t))) bad.push_back(t);
     const int depth = 1 + static_cast<int>(rng() % 5);
-    std::vector<int> region{bad[rng() % bad.size()]};
-    std::vector<char> seen(static_cast<std::size_t>(best.n_tris()), 0);
-    seen[static_cast<std::size_t>(region[0])] = 1;
-    for (std::size_t head = 0, level_end = 1, level = 0; head < region.size() && level < static_cast<std::size_t>(depth); ++head) {
-      for (int k = 0; k < 3; ++k) {
-        const int u = best.tri(region[head]).n[k];
-        if (u >= 0 && !seen[static_cast<std::size_t>(u)]) {
-          seen[static_cast<std::size_t>(u)] = 1;
-          region.push_back(u);
-        }
-      }
-      if (head + 1 == level_end) ++level, level_end = region.size();
-    }
-    std::vector<int> victims;
-    for (int t : region)
-      for (int v : best.tri(t).v)
-        if (!best.is_required(v)) victims.push_back(v);
-    std::sort(victims.begin(), victims.end());
-    victims.erase(std::unique(victims.begin(), victims.end()), victims.end());
+    const int centre = bad[rng() % bad.size()];
     Triangulation tr = best;
-    tr.begin();
-    for (int v : victims)
-      if (tr.alive_point(v)) tr.remove_vertex(v);
-    tr.commit();
+    without_steiner_near(tr, centre, depth);
     NonObtuseParams p = params;
     p.seed = params.seed + 1000u + static_cast<unsigned>(round);
     NonObtuseSolver solver(tr, p, timed ? now + (deadline - now) / 3 : deadline);
@@ -587,31 +595,9 @@ void reduce(Triangulation& best, const NonObtuseParams& params, std::size_t cap,
     for (int t = 0; t < best.n_tris(); ++t)
       if (best.tri(t).alive) live.push_back(t);
     const int depth = 1 + static_cast<int>(rng() % 4);
-    std::vector<int> region{live[rng() % live.size()]};
-    std::vector<char> seen(static_cast<std::size_t>(best.n_tris()), 0);
-    seen[static_cast<std::size_t>(region[0])] = 1;
-    for (std::size_t head = 0, level_end = 1, level = 0; head < region.size() && level < static_cast<std::size_t>(depth); ++head) {
-      for (int k = 0; k < 3; ++k) {
-        const int u = best.tri(region[head]).n[k];
-        if (u >= 0 && !seen[static_cast<std::size_t>(u)]) {
-          seen[static_cast<std::size_t>(u)] = 1;
-          region.push_back(u);
-        }
-      }
-      if (head + 1 == level_end) ++level, level_end = region.size();
-    }
-    std::vector<int> victims;
-    for (int t : region)
-      for (int v : best.tri(t).v)
-        if (!best.is_required(v)) victims.push_back(v);
-    std::sort(victims.begin(), victims.end());
-    victims.erase(std::unique(victims.begin(), victims.end()), victims.end());
-    if (victims.size() < 2) continue;
+    const int centre = live[rng() % live.size()];
     Triangulation tr = best;
-    tr.begin();
-    for (int v : victims)
-      if (tr.alive_point(v)) tr.remove_vertex(v);
-    tr.commit();
+    if (without_steiner_near(tr, centre, depth) < 2) continue;  // one point: the pruning's job
     NonObtuseParams p = params;
     p.seed = params.seed + 5000u + static_cast<unsigned>(round);
     NonObtuseSolver solver(tr, p, std::min(deadline, now + std::chrono::milliseconds(300)));

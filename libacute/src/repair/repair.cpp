@@ -319,10 +319,7 @@ class Repairer {
     for (auto vh : sub.vertices())
       if (!sub.status(vh).deleted()) all.push_back(vh);
     if (!relax_jointly(sub, all, bounds_, forced)) return;
-    std::vector<EdgeHandle> queue;
-    for (auto eh : sub.edges())
-      if (!sub.status(eh).deleted()) queue.push_back(eh);
-    restore_delaunay(sub, queue);
+    make_delaunay(sub);
     smooth_sub(sub, forced, 1);
   }
 
