@@ -90,6 +90,39 @@ TEST(Sampling, small_angle_apex_triangle_is_isosceles) {
   }
 }
 
+TEST(Sampling, uniform_field_gives_a_hexagonal_interior) {
+  // Away from the boundary rows, every sample has six neighbours at exactly the spacing: the
+  // lattice start is a centroidal Voronoi tessellation there already.
+  const Domain d = test::unit_square();
+  const Mesh cdt = build_cdt(d);
+  const double h = 0.05;
+  const Mesh mesh = sample_domain(d, cdt, SizeField::uniform(h), {});
+  std::size_t deep = 0;
+  for (auto vh : mesh.vertices()) {
+    const Point2 p = point2(mesh, vh);
+    if (std::min({p.x(), p.y(), 1 - p.x(), 1 - p.y()}) < 3 * h) continue;
+    ++deep;
+    int degree = 0;
+    for (auto w : mesh.vv_range(vh)) {
+      ++degree;
+      EXPECT_NEAR((point2(mesh, w) - p).norm(), h, 1e-12) << "vertex " << vh.idx();
+    }
+    EXPECT_EQ(degree, 6) << "vertex " << vh.idx();
+  }
+  EXPECT_GT(deep, 150u);
+}
+
+TEST(Sampling, random_interior_is_still_available) {
+  const Domain d = test::l_shape();
+  const Mesh cdt = build_cdt(d);
+  SamplingParams random;
+  random.interior = InteriorSampling::Random;
+  const Mesh a = sample_domain(d, cdt, SizeField::uniform(0.05), random), b = sample_domain(d, cdt, SizeField::uniform(0.05), {});
+  EXPECT_EQ(test::verify_valid(a), "");
+  EXPECT_NEAR(static_cast<double>(a.n_vertices()), static_cast<double>(b.n_vertices()), 0.1 * static_cast<double>(b.n_vertices()));
+  EXPECT_GT(measure_quality(a).n_obtuse, measure_quality(b).n_obtuse) << "random seeds are the rougher start";
+}
+
 TEST(Sampling, vertex_count_lands_near_target) {
   for (const Domain& d : {test::unit_square(), test::l_shape()}) {
     for (std::size_t n : {1000u, 5000u}) {

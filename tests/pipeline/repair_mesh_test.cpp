@@ -189,10 +189,7 @@ TEST(RepairMesh, feature_angle_merges_collinear_boundary_vertices) {
   EXPECT_NEAR(a1, a0, 1e-9 * a0) << "region unchanged (the run is exactly straight)";
 }
 
-// The bounds part of these two sweeps is issue 6's goal, not met yet on every input: the enabled
-// tests assert validity and conformity; the DISABLED_ ones assert the bounds (run them with
-// --gtest_also_run_disabled_tests).
-void repair_shared_meshes(bool require_bounds) {
+TEST(RepairMesh, shared_meshes_conform_and_meet_the_bounds) {
   const fs::path dir = fs::path(ACUTE_SHARED_DIR) / "domains" / "meshes";
   if (!fs::is_directory(dir)) GTEST_SKIP() << dir << " absent";
   int n = 0;
@@ -206,16 +203,11 @@ void repair_shared_meshes(bool require_bounds) {
     o.time_limit_s = 20;
     const RepairMeshResult r = repair_mesh(in, o);
     EXPECT_EQ(conforms(in, r.mesh, false), "") << name;
-    if (require_bounds) {
-      EXPECT_EQ(r.n_bad, 0u) << name << ": bounds not met, angles " << r.min_angle_deg << ".." << r.max_angle_deg;
-    }
+    EXPECT_EQ(r.n_bad, 0u) << name << ": bounds not met, angles " << r.min_angle_deg << ".." << r.max_angle_deg;
     ++n;
   }
   EXPECT_GE(n, 5) << "meshes repaired from " << dir;
 }
-
-TEST(RepairMesh, shared_meshes_are_repaired_and_conform) { repair_shared_meshes(false); }
-TEST(RepairMesh, DISABLED_shared_meshes_meet_the_bounds) { repair_shared_meshes(true); }
 
 // --- invalid input -------------------------------------------------------------------------
 

@@ -356,6 +356,7 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   out.size_field = make_size_field(cdt, sp);
   SamplingParams samp;
   samp.seed = params.seed;
+  samp.interior = params.interior;
   out.mesh = sample_domain(domain, cdt, out.size_field, samp, &out.sampling);
   // The count model is not exact (and --size has none): coarsen and resample while over budget.
   // Samples scale as 1 / h^2 away from the input points, which stay.

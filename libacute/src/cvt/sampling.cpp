@@ -1,5 +1,7 @@
 #include <acute/cvt/sampling.h>
 
+#include "cvt/lattice.h"
+
 #include <acute/core/errors.h>
 #include <acute/delaunay/cdt.h>
 #include <acute/mesh/geometry.h>
@@ -10,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <random>
 
 namespace acute {
@@ -295,7 +298,6 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
   }
 
   if (params.sample_interior) {
-    // Stratified sampling per triangle of the boundary CDT.
     std::mt19937 rng(params.seed);
     const double density = 2.0 / std::sqrt(3.0);
     const double margin = std::sqrt(3.0) / 4.0;
@@ -305,7 +307,13 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     };
     std::vector<Tri> stack;
     std::vector<std::pair<Point2, Point2>> near_segments;
-    std::vector<Point2> interior;
+    std::vector<Point2> interior, candidates;
+    std::optional<detail::NestedLattice> lattice;
+    if (params.interior == InteriorSampling::Lattice) {
+      Point2 lo = point2(mesh, *mesh.vertices_begin()), hi = lo;
+      for (auto vh : mesh.vertices()) lo = lo.cwiseMin(point2(mesh, vh)), hi = hi.cwiseMax(point2(mesh, vh));
+      lattice.emplace(field, lo, hi, params.seed);
+    }
     for (auto fh : mesh.faces()) {
       const auto fp = face_points(mesh, fh);
       near_segments.clear();
@@ -321,30 +329,39 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
           pushc(mesh.prev_halfedge_handle(o));
         }
       }
-      stack.clear();
-      stack.push_back({fp[0], fp[1], fp[2], 0});
-      while (!stack.empty()) {
-        const Tri t = stack.back();
-        stack.pop_back();
-        const double area = 0.5 * signed_area2(t.a, t.b, t.c);
-        const double h = field.eval((t.a + t.b + t.c) / 3.0, hint);
-        const double expected = area * density / (h * h);
-        if (expected > 1.0 && t.depth < 40) {
-          const Point2 ab = 0.5 * (t.a + t.b), bc = 0.5 * (t.b + t.c), ca = 0.5 * (t.c + t.a);
-          stack.push_back({ca, bc, t.c, t.depth + 1});
-          stack.push_back({ab, t.b, bc, t.depth + 1});
-          stack.push_back({ab, bc, ca, t.depth + 1});
-          stack.push_back({t.a, ab, ca, t.depth + 1});
-          continue;
+      candidates.clear();
+      if (lattice) {
+        lattice->points_in_triangle(fp[0], fp[1], fp[2], hint, candidates);
+      } else {
+        // Stratified: the triangle cut in four until each piece expects <= 1 point.
+        stack.clear();
+        stack.push_back({fp[0], fp[1], fp[2], 0});
+        while (!stack.empty()) {
+          const Tri t = stack.back();
+          stack.pop_back();
+          const double area = 0.5 * signed_area2(t.a, t.b, t.c);
+          const double h = field.eval((t.a + t.b + t.c) / 3.0, hint);
+          const double expected = area * density / (h * h);
+          if (expected > 1.0 && t.depth < 40) {
+            const Point2 ab = 0.5 * (t.a + t.b), bc = 0.5 * (t.b + t.c), ca = 0.5 * (t.c + t.a);
+            stack.push_back({ca, bc, t.c, t.depth + 1});
+            stack.push_back({ab, t.b, bc, t.depth + 1});
+            stack.push_back({ab, bc, ca, t.depth + 1});
+            stack.push_back({t.a, ab, ca, t.depth + 1});
+            continue;
+          }
+          const double draw = unit(rng);
+          double r1 = unit(rng), r2 = unit(rng);
+          if (draw >= expected) continue;
+          if (r1 + r2 > 1.0) r1 = 1.0 - r1, r2 = 1.0 - r2;
+          const Point2 p = t.a + r1 * (t.b - t.a) + r2 * (t.c - t.a);
+          if (predicates::orient2d(fp[0], fp[1], p) != Sign::Positive || predicates::orient2d(fp[1], fp[2], p) != Sign::Positive ||
+              predicates::orient2d(fp[2], fp[0], p) != Sign::Positive)
+            continue;
+          candidates.push_back(p);
         }
-        const double draw = unit(rng);
-        double r1 = unit(rng), r2 = unit(rng);
-        if (draw >= expected) continue;
-        if (r1 + r2 > 1.0) r1 = 1.0 - r1, r2 = 1.0 - r2;
-        const Point2 p = t.a + r1 * (t.b - t.a) + r2 * (t.c - t.a);
-        if (predicates::orient2d(fp[0], fp[1], p) != Sign::Positive || predicates::orient2d(fp[1], fp[2], p) != Sign::Positive ||
-            predicates::orient2d(fp[2], fp[0], p) != Sign::Positive)
-          continue;
+      }
+      for (const Point2& p : candidates) {
         const double hp = field.eval(p, hint);
         bool keep = true;
         for (const auto& [sa, sb] : near_segments)
@@ -352,8 +369,7 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
             keep = false;
             break;
           }
-        if (!keep) continue;
-        interior.push_back(p);
+        if (keep) interior.push_back(p);
       }
     }
     sort_morton(interior.begin(), interior.end());

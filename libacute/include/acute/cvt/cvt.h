@@ -79,6 +79,7 @@ struct CvtParams {
   int lbfgs_iterations = 200;
   double move_tolerance = 1e-3;     ///< rms |v - c_v| / h(v) to stop at
   unsigned seed = 1;
+  InteriorSampling interior = InteriorSampling::Lattice;  ///< the seeds of the interior
   /// > 0: the whole CVT start (size field, sampling, optimisation) stops after this many seconds:
   /// the field's calibration keeps its best so far, the optimisation gets what is left (none when
   /// nothing is; the sampled mesh is valid as it is)

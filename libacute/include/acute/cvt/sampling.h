@@ -1,5 +1,6 @@
 // Layer: cvt. The initial vertices of a CVT mesh: input points, the segments divided at the
-// target spacing, and the interior seeded by stratified random sampling; built into a CDT.
+// target spacing, and the interior seeded on nested equilateral lattices (or at random); built
+// into a CDT.
 #pragma once
 
 #include <acute/core/domain.h>
@@ -11,9 +12,16 @@
 
 namespace acute {
 
+/// How interior points are seeded.
+enum class InteriorSampling {
+  Lattice,  ///< nested equilateral lattices, the spacing within sqrt(2) of h (hexagonal where h is uniform)
+  Random,   ///< stratified random, density 2 / (sqrt(3) h^2)
+};
+
 struct SamplingParams {
-  unsigned seed = 1;          ///< std::mt19937 seed: same seed, same points
+  unsigned seed = 1;          ///< std::mt19937 seed (random sampling): same seed, same points
   bool sample_interior = true;
+  InteriorSampling interior = InteriorSampling::Lattice;
 };
 
 struct SamplingStats {
@@ -26,9 +34,11 @@ struct SamplingStats {
 /// Every constrained edge of the input CDT (a piece of an input segment between input points) is
 /// divided into n = max(1, round(integral of 1/h)) pieces of equal integral; at input points with a
 /// corner below 60 degrees between constrained edges, the first point on every such edge is at the
-/// same distance from the apex (isosceles apex triangles). Interior points: each triangle of the
-/// boundary CDT is cut recursively into four until it expects <= 1 point (density
-/// 2/(sqrt(3) h^2)), each piece then gets a point with that probability, uniformly placed; points
+/// same distance from the apex (isosceles apex triangles). Interior points (Lattice): the vertices
+/// of an equilateral grid halved where h asks for it (spacing within sqrt(2) of h, exactly h where
+/// h is the field's largest; density 2/(sqrt(3) s^2)); (Random): each triangle of the boundary CDT
+/// is cut recursively into four until it expects <= 1 point (density 2/(sqrt(3) h^2)), each piece
+/// then gets a point with that probability, uniformly placed. Points
 /// within sqrt(3)/4 h of a constrained edge or vertex of their triangle (or its neighbours) are dropped
 /// (this accounts for the boundary row).
 /// Result: input points kind Input (input_index as in the domain), segment points OnSegment with

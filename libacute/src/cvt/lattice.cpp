@@ -1,0 +1,119 @@
+#include "cvt/lattice.h"
+
+#include <acute/predicates/predicates.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace acute::detail {
+namespace {
+
+constexpr double kRowHeight = 0.86602540378443864676;  // sqrt(3) / 2
+constexpr double kSqrt2 = 1.41421356237309504880;
+
+/// Separating-axis test of two triangles (either orientation); touching counts as overlapping.
+bool overlaps(const Point2 (&p)[3], const Point2 (&q)[3]) {
+  auto separated_by_edges_of = [](const Point2 (&s)[3], const Point2 (&t)[3]) {
+    for (int e = 0; e < 3; ++e) {
+      const Point2 d = s[(e + 1) % 3] - s[e];
+      const Point2 n(-d.y(), d.x());
+      double smin = n.dot(s[0]), smax = smin, tmin = n.dot(t[0]), tmax = tmin;
+      for (int k = 1; k < 3; ++k) {
+        smin = std::min(smin, n.dot(s[k])), smax = std::max(smax, n.dot(s[k]));
+        tmin = std::min(tmin, n.dot(t[k])), tmax = std::max(tmax, n.dot(t[k]));
+      }
+      if (smax < tmin || tmax < smin) return true;
+    }
+    return false;
+  };
+  return !separated_by_edges_of(p, q) && !separated_by_edges_of(q, p);
+}
+
+}  // namespace
+
+NestedLattice::NestedLattice(const SizeField& field, const Point2& lo, const Point2& hi, unsigned seed) : field_(field) {
+  const double hmax = field.max_value(), hmin = std::max(field.min_value(), hmax * 1e-9);
+  const Point2 extent = hi - lo;
+  // Top level: at most about 4096 cells over the box.
+  int up = 0;
+  double top = hmax;
+  while (up < 40 && extent.x() * extent.y() / (top * top * kRowHeight) > 2048.0) top *= 2, ++up;
+  // Finest level: within sqrt(2) of the smallest h; at most 2^44 units across the box.
+  int down = 0;
+  fine_ = hmax;
+  while (down < 40 && fine_ > hmin * kSqrt2 && up + down < 44) fine_ *= 0.5, ++down;
+  top_ = up + down;
+  // Off the box by a random part of a cell, so that lattice rows do not run along the domain's
+  // own axis-parallel edges.
+  std::mt19937 rng(seed);
+  const double fx = (static_cast<double>(rng()) + 0.5) / 4294967296.0, fy = (static_cast<double>(rng()) + 0.5) / 4294967296.0;
+  origin_ = lo - Point2(top, top) + fine_ * Point2(fx, fy * kRowHeight);
+}
+
+Point2 NestedLattice::at(const Key& k) const {
+  return origin_ + fine_ * Point2(static_cast<double>(k[0]) + 0.5 * static_cast<double>(k[1]), static_cast<double>(k[1]) * kRowHeight);
+}
+
+void NestedLattice::points_in_triangle(const Point2& a, const Point2& b, const Point2& c, int& hint, std::vector<Point2>& out) {
+  const Point2 tri[3] = {a, b, c};
+  const std::int64_t unit = std::int64_t{1} << top_;
+  const double top = fine_ * static_cast<double>(unit), row = top * kRowHeight;
+  stack_.clear();
+  keys_.clear();
+  // The top cells meeting the triangle, row by row: the triangle's x-range within each band.
+  const double ymin = std::min({a.y(), b.y(), c.y()}), ymax = std::max({a.y(), b.y(), c.y()});
+  const auto j0 = static_cast<std::int64_t>(std::floor((ymin - origin_.y()) / row));
+  const auto j1 = static_cast<std::int64_t>(std::floor((ymax - origin_.y()) / row));
+  for (std::int64_t j = j0; j <= j1; ++j) {
+    const double y0 = origin_.y() + static_cast<double>(j) * row, y1 = y0 + row;
+    double xmin = INFINITY, xmax = -INFINITY;
+    for (int e = 0; e < 3; ++e) {
+      const Point2& p = tri[e];
+      const Point2& q = tri[(e + 1) % 3];
+      if (p.y() >= y0 && p.y() <= y1) xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
+      for (double y : {y0, y1})
+        if ((p.y() - y) * (q.y() - y) < 0) {
+          const double x = p.x() + (y - p.y()) / (q.y() - p.y()) * (q.x() - p.x());
+          xmin = std::min(xmin, x), xmax = std::max(xmax, x);
+        }
+    }
+    if (!(xmin <= xmax)) continue;
+    const double shift = 0.5 * static_cast<double>(j);
+    const auto i0 = static_cast<std::int64_t>(std::floor((xmin - origin_.x()) / top - shift)) - 1;
+    const auto i1 = static_cast<std::int64_t>(std::floor((xmax - origin_.x()) / top - shift)) + 1;
+    for (std::int64_t i = i0; i <= i1; ++i) {
+      const Key p00{i * unit, j * unit}, p10{(i + 1) * unit, j * unit}, p01{i * unit, (j + 1) * unit}, p11{(i + 1) * unit, (j + 1) * unit};
+      stack_.push_back({{p00, p10, p01}, top_});
+      stack_.push_back({{p10, p11, p01}, top_});
+    }
+  }
+  auto mid = [](const Key& p, const Key& q) { return Key{(p[0] + q[0]) / 2, (p[1] + q[1]) / 2}; };
+  while (!stack_.empty()) {
+    const Cell cell = stack_.back();
+    stack_.pop_back();
+    const Point2 q[3] = {at(cell.v[0]), at(cell.v[1]), at(cell.v[2])};
+    if (!overlaps(tri, q)) continue;
+    if (cell.level > 0) {
+      const double spacing = fine_ * static_cast<double>(std::int64_t{1} << cell.level);
+      if (field_.eval((q[0] + q[1] + q[2]) / 3.0, hint) < spacing / kSqrt2) {
+        const Key m01 = mid(cell.v[0], cell.v[1]), m12 = mid(cell.v[1], cell.v[2]), m20 = mid(cell.v[2], cell.v[0]);
+        const int l = cell.level - 1;
+        stack_.push_back({{cell.v[0], m01, m20}, l});
+        stack_.push_back({{m01, cell.v[1], m12}, l});
+        stack_.push_back({{m20, m12, cell.v[2]}, l});
+        stack_.push_back({{m01, m12, m20}, l});
+        continue;
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+      if (predicates::orient2d(a, b, q[k]) == Sign::Positive && predicates::orient2d(b, c, q[k]) == Sign::Positive &&
+          predicates::orient2d(c, a, q[k]) == Sign::Positive)
+        keys_.push_back(cell.v[k]);
+  }
+  std::sort(keys_.begin(), keys_.end());
+  keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
+  for (const Key& k : keys_) out.push_back(at(k));
+}
+
+}  // namespace acute::detail
