@@ -94,6 +94,46 @@ TEST(RebuildWedge, wide_corner_is_left_alone) {
   EXPECT_FALSE(detail::rebuild_wedge(sub, corner, 3));
 }
 
+/// A square with a wedge between two interior segments at the origin (apex angle in degrees).
+Domain wedge_between_segments(double apex_deg) {
+  Domain d;
+  d.points = {Point2(-10, -10), Point2(10, -10), Point2(10, 10), Point2(-10, 10), Point2(0, 0), polar(8, 0), polar(8, apex_deg)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {4, 6}};
+  return d;
+}
+
+TEST(RebuildHub, wedge_between_interior_segments_gets_an_isosceles_apex) {
+  for (double apex_deg : {8.0, 15.0}) {
+    SCOPED_TRACE(apex_deg);
+    Mesh mesh = cvt_mesh(wedge_between_segments(apex_deg), 400);
+    const double area = test::total_area(mesh);
+    detail::Region region = region_near(mesh, Point2(0, 0), 9.5);
+    Mesh sub = region.sub;
+    const VertexHandle apex = vertex_at(sub, Point2(0, 0));
+    ASSERT_TRUE(apex.is_valid());
+    ASSERT_TRUE(detail::rebuild_hub(sub, apex, 3));
+    // The apex triangle inside the wedge (its base vertices on the two segments) is isosceles.
+    std::size_t isosceles = 0;
+    for (auto fh : sub.vf_range(apex)) {
+      std::vector<Point2> base;
+      for (auto vh : sub.fv_range(fh))
+        if (vh != apex) base.push_back(point2(sub, vh));
+      const double a0 = std::atan2(base[0].y(), base[0].x()) * 180 / kPi, a1 = std::atan2(base[1].y(), base[1].x()) * 180 / kPi;
+      const bool in_wedge = std::abs(std::min(a0, a1)) < 1e-9 && std::abs(std::max(a0, a1) - apex_deg) < 1e-9;
+      if (in_wedge) {
+        ++isosceles;
+        EXPECT_NEAR(base[0].norm(), base[1].norm(), 1e-12 * base[0].norm());
+      }
+    }
+    EXPECT_EQ(isosceles, 1u) << "one triangle at the apex inside the wedge";
+    detail::commit_region(mesh, region, sub);
+    mesh.garbage_collection();
+    EXPECT_MESH_VALID(mesh);
+    EXPECT_EQ(detail::constraint_violation(mesh), "");
+    EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
+  }
+}
+
 TEST(RemeshRegion, resampled_region_stays_valid_and_conforming) {
   Domain d;
   d.points = {Point2(0, 0), Point2(4, 0), Point2(4, 4), Point2(0, 4), Point2(1, 2), Point2(3, 2.5)};

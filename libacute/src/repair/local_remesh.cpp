@@ -154,8 +154,11 @@ std::vector<Sector> narrow_sectors(const Mesh& sub, VertexHandle vh, double max_
   return out;
 }
 
-/// rebuild_wedge for one sector.
-bool rebuild_sector(Mesh& sub, VertexHandle apex, const Sector& sector, int rings);
+/// Rebuilds `sectors` (narrow sectors at apex) with common radii. keep_interior_walls: a wall with
+/// faces on both sides (an interior segment) keeps its vertices, which then set the radii (one
+/// such wall at most); otherwise every wall is divided at the geometric radii of the narrowest
+/// sector, so that sectors sharing a wall agree on its points.
+bool rebuild_sectors(Mesh& sub, VertexHandle apex, const std::vector<Sector>& sectors, int rings, bool keep_interior_walls);
 
 }  // namespace
 
@@ -163,8 +166,15 @@ bool rebuild_wedge(Mesh& sub, VertexHandle apex, int rings) {
   constexpr double kPi = 3.14159265358979323846;
   if (rings < 3) return false;
   bool rebuilt = false;
-  for (const Sector& sector : narrow_sectors(sub, apex, kPi / 3)) rebuilt = rebuild_sector(sub, apex, sector, rings) || rebuilt;
+  for (const Sector& sector : narrow_sectors(sub, apex, kPi / 3)) rebuilt = rebuild_sectors(sub, apex, {sector}, rings, true) || rebuilt;
   return rebuilt;
+}
+
+bool rebuild_hub(Mesh& sub, VertexHandle apex, int rings) {
+  constexpr double kPi = 3.14159265358979323846;
+  if (rings < 3) return false;
+  const std::vector<Sector> sectors = narrow_sectors(sub, apex, kPi / 3);
+  return !sectors.empty() && rebuild_sectors(sub, apex, sectors, rings, false);
 }
 
 bool has_narrow_sector(const Mesh& sub, VertexHandle vh) {
@@ -174,25 +184,28 @@ bool has_narrow_sector(const Mesh& sub, VertexHandle vh) {
 
 namespace {
 
-bool rebuild_sector(Mesh& sub, VertexHandle apex, const Sector& sector, int rings) {
+bool rebuild_sectors(Mesh& sub, VertexHandle apex, const std::vector<Sector>& sectors, int rings, bool keep_interior_walls) {
   const Point2 c = point2(sub, apex);
-  const Point2* u = sector.u;
-  auto wall_at_apex = [&](int w) {
+  auto wall_at_apex = [&](const Point2& u) {
     HalfedgeHandle wall;
     for (auto heh : sub.voh_range(apex))
-      if (is_constrained(sub, sub.edge_handle(heh)) && (point2(sub, sub.to_vertex_handle(heh)) - c).normalized().dot(u[w]) > 1 - 1e-12) wall = heh;
+      if (is_constrained(sub, sub.edge_handle(heh)) && (point2(sub, sub.to_vertex_handle(heh)) - c).normalized().dot(u) > 1 - 1e-12) wall = heh;
     return wall;
   };
-  // A wall with faces on both sides (an interior segment) keeps its vertices: removing them would
-  // coarsen the other side. The rings then sit at their radii.
+  // The walls of every sector, each once (neighbouring sectors share one).
+  std::vector<Point2> walls;
+  for (const Sector& sector : sectors)
+    for (const Point2& u : sector.u)
+      if (std::none_of(walls.begin(), walls.end(), [&](const Point2& w) { return w.dot(u) > 1 - 1e-12; })) walls.push_back(u);
   std::vector<VertexHandle> kept;
-  int interior_wall = -1;
-  for (int w = 0; w < 2; ++w) {
-    const HalfedgeHandle h = wall_at_apex(w);
+  int kept_wall = -1;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const HalfedgeHandle h = wall_at_apex(walls[w]);
     if (!h.is_valid()) return false;
-    if (sub.is_boundary(h) || sub.is_boundary(sub.opposite_halfedge_handle(h))) continue;
-    if (interior_wall >= 0) return false;  // two interior walls: not rebuilt
-    interior_wall = w;
+    if (!keep_interior_walls || sub.is_boundary(h) || sub.is_boundary(sub.opposite_halfedge_handle(h))) continue;
+    // An interior segment kept as it is (removing its vertices would coarsen the other side).
+    if (kept_wall >= 0) return false;  // two interior walls: not rebuilt this way
+    kept_wall = static_cast<int>(w);
     // Walk the wall outwards while its vertices are movable.
     HalfedgeHandle step = h;
     for (int guard = 0; guard < 1024; ++guard) {
@@ -214,18 +227,23 @@ bool rebuild_sector(Mesh& sub, VertexHandle apex, const Sector& sector, int ring
   auto in_sector = [&](const Point2& q) {
     const Point2 d = q - c;
     const double slack = 1e-9 * d.norm();
-    return u[0].x() * d.y() - u[0].y() * d.x() >= -slack && d.x() * u[1].y() - d.y() * u[1].x() >= -slack;
+    for (const Sector& sector : sectors) {
+      const Point2* u = sector.u;
+      if (u[0].x() * d.y() - u[0].y() * d.x() >= -slack && d.x() * u[1].y() - d.y() * u[1].x() >= -slack) return true;
+    }
+    return false;
   };
-  // Radius of the rebuilt part: short of the nearest vertex in the sector that stays.
+  // Radius of the rebuilt part: short of the nearest vertex in the sectors that stays.
   double reach = INFINITY;
   for (auto vh : sub.vertices()) {
     if (sub.status(vh).deleted() || vh == apex || !in_sector(point2(sub, vh))) continue;
     if (is_input(sub, vh)) reach = std::min(reach, (point2(sub, vh) - c).norm());
   }
   if (!std::isfinite(reach)) return false;
+  double narrowest = INFINITY;
+  for (const Sector& sector : sectors) narrowest = std::min(narrowest, sector.angle);
   std::vector<double> radius;
-  const double half = 0.5 * sector.angle;
-  if (interior_wall >= 0) {
+  if (kept_wall >= 0) {
     for (auto vh : kept) {
       const double r = (point2(sub, vh) - c).norm();
       if (r < reach) radius.push_back(r);
@@ -234,7 +252,7 @@ bool rebuild_sector(Mesh& sub, VertexHandle apex, const Sector& sector, int ring
     if (radius.size() < 2) return false;
   } else {
     // Geometric radii, the last ring a step short of the reach.
-    const double growth = 1.0 + 2.0 * std::sin(half) / std::sqrt(3.0);
+    const double growth = 1.0 + 2.0 * std::sin(0.5 * narrowest) / std::sqrt(3.0);
     radius.resize(static_cast<std::size_t>(rings));
     radius.back() = reach / growth;
     for (int k = rings - 2; k >= 0; --k) radius[static_cast<std::size_t>(k)] = radius[static_cast<std::size_t>(k) + 1] / growth;
@@ -251,21 +269,24 @@ bool rebuild_sector(Mesh& sub, VertexHandle apex, const Sector& sector, int ring
     if (!sub.status(vh).deleted()) return false;  // something in the way: leave it to other candidates
 
   // Wall points from the outermost inwards: each split shortens the wall edge at the apex.
-  for (int w = 0; w < 2; ++w) {
-    if (w == interior_wall) continue;
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    if (static_cast<int>(w) == kept_wall) continue;
     for (std::size_t k = radius.size(); k-- > 0;) {
-      const HalfedgeHandle wall = wall_at_apex(w);
+      const HalfedgeHandle wall = wall_at_apex(walls[w]);
       if (!wall.is_valid()) return false;
       if ((point2(sub, sub.to_vertex_handle(wall)) - c).norm() <= radius[k]) continue;
-      split_edge(sub, sub.edge_handle(wall), c + radius[k] * u[w]);
+      split_edge(sub, sub.edge_handle(wall), c + radius[k] * walls[w]);
     }
   }
-  // The middle row on the bisector, between consecutive rings.
-  const Point2 bisector = (u[0] + u[1]).normalized();
-  for (std::size_t k = 0; k + 1 < radius.size(); ++k) {
-    const Point2 q = c + (0.5 * (radius[k] + radius[k + 1]) * std::cos(half)) * bisector;
-    for (auto fh : sub.vf_range(apex))
-      if (insert_point(sub, q, fh).is_valid()) break;
+  // The middle row on each sector's bisector, between consecutive rings.
+  for (const Sector& sector : sectors) {
+    const Point2 bisector = (sector.u[0] + sector.u[1]).normalized();
+    const double half = 0.5 * sector.angle;
+    for (std::size_t k = 0; k + 1 < radius.size(); ++k) {
+      const Point2 q = c + (0.5 * (radius[k] + radius[k + 1]) * std::cos(half)) * bisector;
+      for (auto fh : sub.vf_range(apex))
+        if (insert_point(sub, q, fh).is_valid()) break;
+    }
   }
   make_delaunay(sub);
   return true;

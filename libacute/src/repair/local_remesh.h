@@ -26,6 +26,14 @@ bool remesh_region(Mesh& sub, double h, std::uint32_t seed);
 /// gets three triangles. Returns false when there is no such sector or nothing was rebuilt.
 bool rebuild_wedge(Mesh& sub, VertexHandle apex, int rings);
 
+/// Every sector narrower than 60 degrees at `apex` rebuilt at once, as rebuild_wedge does one, with
+/// common radii (the growth of the narrowest sector) on all their walls, interior segments
+/// included: those are divided at the radii too, so a wedge between two interior segments (or one
+/// whose interior wall is too coarse for a graded strip) is rebuilt, and sectors sharing a wall
+/// agree on its points. The faces on the far side of a divided interior wall are left to the
+/// repair (slivers there when the wedge is much narrower than the spacing: see clusters.poly).
+bool rebuild_hub(Mesh& sub, VertexHandle apex, int rings);
+
 /// Whether vh has a sector rebuild_wedge would rebuild (narrower than 60 degrees, wholly in sub).
 bool has_narrow_sector(const Mesh& sub, VertexHandle vh);
 

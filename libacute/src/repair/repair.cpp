@@ -545,7 +545,10 @@ class Repairer {
     apexes.erase(std::unique(apexes.begin(), apexes.end()), apexes.end());
     for (auto vh : apexes)
       if (detail::has_narrow_sector(sub0, vh))
+      {
         for (int rings : {3, 5}) attempt([&, vh, rings](Mesh& sub) { return detail::rebuild_wedge(sub, vh, rings); });
+        for (int rings : {3, 5}) attempt([&, vh, rings](Mesh& sub) { return detail::rebuild_hub(sub, vh, rings); });
+      }
     joint_first = false;
 
     // A cluster that has resisted every single operation: the region re-sampled from scratch at
