@@ -362,8 +362,10 @@ class Repairer {
   void expand(const Mesh& sub0, const std::vector<bool>& forced, std::vector<Outcome>& out, bool remesh) {
     candidate_ = 0;
     bool joint_first = false;  // candidates whose connectivity Delaunay restoration would undo
+    bool solved = false;       // a candidate left nothing bad: the rest could only raise the worst margin
     auto attempt = [&](auto&& operation) {
       ++candidate_;
+      if (solved) return;
       if (!out.empty() && out_of_time()) return;  // one cluster's search must not outlast the time limit
       Mesh sub = sub0;
       if (!operation(sub)) return;  // (no garbage collection: sub vertex indices map to the big mesh)
@@ -377,10 +379,11 @@ class Repairer {
       smooth_sub(sub, forced, 3);
       const Score s = score(sub, forced);
       if (trace_) std::fprintf(stderr, "    candidate %d: infeasible %zu bad %zu worst %.4f\n", candidate_, s.infeasible, s.bad, s.worst);
+      solved = s.bad == 0 && s.infeasible == 0;
       out.push_back(Outcome{s, std::move(sub), candidate_});
     };
-    attempt([](Mesh&) { return true; });  // smoothing alone
-    if (out.back().score.bad == 0 && out.back().score.infeasible == 0) return;  // enough: most clusters end here
+    attempt([](Mesh&) { return true; });  // smoothing alone: enough for most clusters
+    if (solved) return;
 
     // The worst face of the region drives the topological candidates.
     FaceHandle worst;
