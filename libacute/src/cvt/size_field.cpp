@@ -102,14 +102,26 @@ int SizeField::walk(const Point2& p, int start) const {
 
 double SizeField::eval(const Point2& p, int& hint) const {
   if (is_uniform()) return uniform_;
-  hint = walk(p, hint);
+  auto barycentric = [&](int t, double (&l)[3]) {
+    const auto& tri = triangles_[static_cast<std::size_t>(t)];
+    const Point2& a = points_[static_cast<std::size_t>(tri[0])];
+    const Point2& b = points_[static_cast<std::size_t>(tri[1])];
+    const Point2& c = points_[static_cast<std::size_t>(tri[2])];
+    const double det = signed_area2(a, b, c);
+    l[0] = signed_area2(p, b, c) / det, l[1] = signed_area2(a, p, c) / det, l[2] = signed_area2(a, b, p) / det;
+  };
+  // Most queries fall in the hint's triangle: its rounded barycentric coordinates say so without
+  // the exact walk (an interpolation, not a topological decision: on an edge either side gives
+  // the same value).
+  double l[3];
+  const bool hinted = hint >= 0 && hint < static_cast<int>(triangles_.size());
+  if (hinted) barycentric(hint, l);
+  if (!hinted || !(l[0] >= 0 && l[1] >= 0 && l[2] >= 0)) {
+    hint = walk(p, hint);
+    barycentric(hint, l);
+  }
   const auto& tri = triangles_[static_cast<std::size_t>(hint)];
-  const Point2& a = points_[static_cast<std::size_t>(tri[0])];
-  const Point2& b = points_[static_cast<std::size_t>(tri[1])];
-  const Point2& c = points_[static_cast<std::size_t>(tri[2])];
-  const double det = signed_area2(a, b, c);
-  double l0 = signed_area2(p, b, c) / det, l1 = signed_area2(a, p, c) / det, l2 = signed_area2(a, b, p) / det;
-  l0 = std::max(l0, 0.0), l1 = std::max(l1, 0.0), l2 = std::max(l2, 0.0);
+  double l0 = std::max(l[0], 0.0), l1 = std::max(l[1], 0.0), l2 = std::max(l[2], 0.0);
   const double s = l0 + l1 + l2;
   if (!(s > 0)) return values_[static_cast<std::size_t>(tri[0])];
   return (l0 * values_[static_cast<std::size_t>(tri[0])] + l1 * values_[static_cast<std::size_t>(tri[1])] +

@@ -392,9 +392,17 @@ void compute_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out,
   const double rho_u = rho_of_h(field.max_value());
   if (ws.vertex_hint.size() != nv) ws.vertex_hint.assign(nv, -1);
   ws.vertex_rho.resize(nv);
+  int last_hint = -1;  // a vertex without a hint yet starts its walk where the previous one ended (vertices are Z-ordered)
   auto set_rho = [&](VertexHandle vh) {
     const auto i = static_cast<std::size_t>(vh.idx());
-    ws.vertex_rho[i] = uniform ? rho_u : rho_of_h(field.eval(point2(mesh, vh), ws.vertex_hint[i]));
+    if (uniform) {
+      ws.vertex_rho[i] = rho_u;
+      return;
+    }
+    int& hint = ws.vertex_hint[i];
+    if (hint < 0) hint = last_hint;
+    ws.vertex_rho[i] = rho_of_h(field.eval(point2(mesh, vh), hint));
+    last_hint = hint;
   };
   s.vertex_site.assign(nv, -1);
   s.face_region.assign(nf, -1);
