@@ -33,13 +33,6 @@ constexpr double kPi = 3.14159265358979323846;
 /// Uniform double in (0, 1) from 32 random bits (portable, unlike the std distributions).
 inline double unit(std::mt19937& rng) { return (static_cast<double>(rng()) + 0.5) * (1.0 / 4294967296.0); }
 
-double segment_distance(const Point2& p, const Point2& a, const Point2& b) {
-  const Point2 d = b - a;
-  const double l2 = d.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * d)).norm();
-}
-
 /// Positions along [0, L] of the interior division points of a piece [s0, s1] of segment a + s u,
 /// n = max(1, round(integral of 1/h)) pieces of equal integral.
 void divide(const SizeField& field, const Point2& a, const Point2& u, double s0, double s1, int& hint, std::vector<double>& out) {
@@ -358,7 +351,7 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
         const double hp = field.eval(p, hint);
         bool keep = true;
         for (const auto& [sa, sb] : near_segments)
-          if (segment_distance(p, sa, sb) < margin * hp) {
+          if (distance_to_segment(p, sa, sb) < margin * hp) {
             keep = false;
             break;
           }

@@ -16,13 +16,6 @@ namespace acute::detail {
 
 namespace {
 
-double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
-  const Point2 d = b - a;
-  const double l2 = d.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * d)).norm();
-}
-
 /// Divides constrained, non-frozen edges longer than 1.5 h into equal pieces of about h.
 bool divide_segments(Mesh& sub, double h) {
   std::vector<std::array<VertexHandle, 2>> long_edges;
