@@ -4,6 +4,8 @@ acute_add_test(mesh_tests
     mesh/check_test.cpp
     mesh/quality_test.cpp
     mesh/segments_test.cpp
+    mesh/sectors_test.cpp
+    mesh/geometry_test.cpp
   LIBS acute_mesh)
 acute_add_test(mesh_dual_tests
   SOURCES

@@ -5,6 +5,7 @@
 #include <acute/core/errors.h>
 #include <acute/delaunay/cdt.h>
 #include <acute/mesh/geometry.h>
+#include <acute/mesh/sectors.h>
 #include <acute/ops/insert.h>
 #include <acute/predicates/predicates.h>
 
@@ -31,13 +32,6 @@ constexpr double kPi = 3.14159265358979323846;
 
 /// Uniform double in (0, 1) from 32 random bits (portable, unlike the std distributions).
 inline double unit(std::mt19937& rng) { return (static_cast<double>(rng()) + 0.5) * (1.0 / 4294967296.0); }
-
-double segment_distance(const Point2& p, const Point2& a, const Point2& b) {
-  const Point2 d = b - a;
-  const double l2 = d.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * d)).norm();
-}
 
 /// Positions along [0, L] of the interior division points of a piece [s0, s1] of segment a + s u,
 /// n = max(1, round(integral of 1/h)) pieces of equal integral.
@@ -228,6 +222,7 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
   // Concentric shells: the first point on every constrained edge at a corner below 60 degrees is at
   // the same distance from the apex.
   std::vector<double> shell(cdt.n_vertices(), 0.0);
+  const WallTest is_wall = [&](HalfedgeHandle h) { return seg_of(h) >= 0; };
   int hint = -1;
   for (auto vh : cdt.vertices()) {
     const Point2 v = point2(cdt, vh);
@@ -236,17 +231,8 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     for (auto h : cdt.voh_range(vh)) {
       if (seg_of(h) < 0) continue;
       shortest = std::min(shortest, (point2(cdt, cdt.to_vertex_handle(h)) - v).norm());
-      // Sweep counter-clockwise from h through the faces up to the next constrained edge.
-      double angle = 0;
-      HalfedgeHandle g = h;
-      for (int guard = 0; guard < 100000 && !cdt.is_boundary(g); ++guard) {
-        const Point2 b = point2(cdt, cdt.to_vertex_handle(g));
-        const Point2 c = point2(cdt, cdt.to_vertex_handle(cdt.next_halfedge_handle(g)));
-        angle += std::atan2(std::abs(signed_area2(v, b, c)), (b - v).dot(c - v));
-        g = cdt.opposite_halfedge_handle(cdt.prev_halfedge_handle(g));
-        if (seg_of(g) >= 0) break;
-      }
-      if (!cdt.is_boundary(h) && angle < kPi / 3.0) sharp = true;
+      // The sector counter-clockwise from h through the faces up to the next constrained edge.
+      if (!cdt.is_boundary(h) && sweep_sector(cdt, h, is_wall, 100000).radians < kPi / 3.0) sharp = true;
     }
     if (sharp) {
       ++stats.small_angle_apices;
@@ -365,7 +351,7 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
         const double hp = field.eval(p, hint);
         bool keep = true;
         for (const auto& [sa, sb] : near_segments)
-          if (segment_distance(p, sa, sb) < margin * hp) {
+          if (distance_to_segment(p, sa, sb) < margin * hp) {
             keep = false;
             break;
           }

@@ -196,15 +196,6 @@ double predicted_vertex_count(const Mesh& mesh, const SizeField& field) {
 
 namespace {
 
-/// Distance from p to segment ab, and the nearest point.
-double segment_distance(const Point2& p, const Point2& a, const Point2& b, Point2& foot) {
-  const Point2 d = b - a;
-  const double l2 = d.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-  foot = a + t * d;
-  return (p - foot).norm();
-}
-
 /// The vertices and constrained/boundary edges of a mesh in a bucket grid, for exact
 /// nearest-feature distances with features incident to given vertices excluded.
 class FeatureGrid {
@@ -290,8 +281,8 @@ class FeatureGrid {
             } else {
               const auto& e = edges_[static_cast<std::size_t>(item) - points_.size()];
               if (e[0] == x0 || e[0] == x1 || e[1] == x0 || e[1] == x1) continue;
-              Point2 q;
-              const double d = segment_distance(p, points_[static_cast<std::size_t>(e[0])], points_[static_cast<std::size_t>(e[1])], q);
+              const Point2 q = nearest_on_segment(p, points_[static_cast<std::size_t>(e[0])], points_[static_cast<std::size_t>(e[1])]);
+              const double d = (p - q).norm();
               if (d < best) best = d, best_foot = q;
             }
           }

@@ -116,14 +116,6 @@ inline double integrate(const Point2& q0, const Point2& q1, const Point2& q2, do
   return area;
 }
 
-/// Squared distance from p to segment ab.
-inline double distance2_to_segment(const Point2& p, const Point2& a, const Point2& b) {
-  const Point2 ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).squaredNorm();
-}
-
 /// Whole cells: a site whose Voronoi cell V (the polygon of the circumcentres around it in the
 /// Delaunay triangulation) lies within the disk B(x, r) inscribed in its mesh star (r: distance
 /// to the star's outer edges; the star is star-shaped from x, so B is inside it) has V inside

@@ -6,4 +6,5 @@ acute_add_layer(mesh
     src/mesh/segments.cpp
     src/mesh/geometry.cpp
     src/mesh/dual.cpp
+    src/mesh/sectors.cpp
   DEPENDS acute_predicates acute_openmesh)

@@ -1,6 +1,7 @@
 #include <acute/repair/angle_bounds.h>
 
 #include <acute/mesh/geometry.h>
+#include <acute/mesh/sectors.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,34 +23,19 @@ std::array<double, 3> angles_deg(const Point2& a, const Point2& b, const Point2&
 
 std::vector<bool> forced_corner_vertices(const Mesh& mesh, double min_deg) {
   std::vector<bool> forced(mesh.n_vertices(), false);
-  auto is_wall = [&](HalfedgeHandle out) {  // a spoke bounding a sector
-    return is_constrained(mesh, mesh.edge_handle(out)) || mesh.is_boundary(mesh.opposite_halfedge_handle(out));
-  };
+  const WallTest is_wall = [&](HalfedgeHandle out) { return is_segment_or_boundary(mesh, out); };
   for (auto vh : mesh.vertices()) {
     if (!is_input(mesh, vh)) continue;
-    const Point2 p = point2(mesh, vh);
-    // Every sector starts at a wall spoke with a face on its left; sweep counter-clockwise to the next wall.
+    // Every sector starts at a wall spoke with a face on its left.
     for (auto start : mesh.voh_range(vh)) {
       if (mesh.is_boundary(start) || !is_wall(start)) continue;
-      double sector = 0;
-      HalfedgeHandle h = start;
-      for (std::size_t guard = 0; guard < 1024; ++guard) {
-        const HalfedgeHandle back = mesh.prev_halfedge_handle(h);  // ends at vh
-        sector += angle_at(p, point2(mesh, mesh.to_vertex_handle(h)), point2(mesh, mesh.from_vertex_handle(back)));
-        h = mesh.opposite_halfedge_handle(back);
-        if (is_wall(h) || h == start || mesh.is_boundary(h)) break;
-      }
-      if (sector < min_deg - 1e-9) forced[static_cast<std::size_t>(vh.idx())] = true;
+      if (sweep_sector(mesh, start, is_wall).degrees < min_deg - 1e-9) forced[static_cast<std::size_t>(vh.idx())] = true;
     }
   }
   return forced;
 }
 
 double sector_angle(const Mesh& mesh, VertexHandle vh, FaceHandle fh) {
-  auto is_wall = [&](HalfedgeHandle out) {
-    return is_constrained(mesh, mesh.edge_handle(out)) || mesh.is_boundary(mesh.opposite_halfedge_handle(out)) ||
-           mesh.is_boundary(out);
-  };
   auto frozen = [&](HalfedgeHandle out) { return mesh.data(mesh.edge_handle(out)).frozen; };
   HalfedgeHandle first;
   for (auto heh : mesh.voh_range(vh))
@@ -59,23 +45,15 @@ double sector_angle(const Mesh& mesh, VertexHandle vh, FaceHandle fh) {
   HalfedgeHandle h = first;
   for (std::size_t guard = 0;; ++guard) {
     if (frozen(h)) return -1;
-    if (is_wall(h) || guard > 1024) break;
+    if (is_segment_or_boundary(mesh, h) || guard > 1024) break;
     const HalfedgeHandle o = mesh.opposite_halfedge_handle(h);
     h = mesh.next_halfedge_handle(o);
     if (h == first) break;  // no wall: the full star
   }
-  const Point2 p = point2(mesh, vh);
-  double sector = 0;
-  const HalfedgeHandle start = h;
-  for (std::size_t guard = 0; guard < 1024; ++guard) {
-    if (mesh.is_boundary(h)) return -1;
-    const HalfedgeHandle back = mesh.prev_halfedge_handle(h);
-    sector += angle_at(p, point2(mesh, mesh.to_vertex_handle(h)), point2(mesh, mesh.from_vertex_handle(back)));
-    h = mesh.opposite_halfedge_handle(back);
-    if (frozen(h)) return -1;
-    if (h == start || is_wall(h)) break;
-  }
-  return sector;
+  if (mesh.is_boundary(h)) return -1;
+  // A frozen spoke ends the sweep too: the fan then leaves the region copy.
+  const SectorSweep sector = sweep_sector(mesh, h, [&](HalfedgeHandle out) { return is_segment_or_boundary(mesh, out) || frozen(out); });
+  return frozen(sector.end) ? -1 : sector.degrees;
 }
 
 bool min_exempt_corner(const Mesh& mesh, VertexHandle vh, FaceHandle fh, double min_deg, const std::vector<bool>& forced) {

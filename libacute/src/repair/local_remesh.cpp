@@ -1,6 +1,7 @@
 #include "repair/local_remesh.h"
 
 #include <acute/mesh/geometry.h>
+#include <acute/mesh/sectors.h>
 #include <acute/ops/delaunay_flips.h>
 #include <acute/ops/insert.h>
 #include <acute/ops/relocate.h>
@@ -14,13 +15,6 @@
 namespace acute::detail {
 
 namespace {
-
-double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
-  const Point2 d = b - a;
-  const double l2 = d.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * d)).norm();
-}
 
 /// Divides constrained, non-frozen edges longer than 1.5 h into equal pieces of about h.
 bool divide_segments(Mesh& sub, double h) {
@@ -132,24 +126,14 @@ struct Sector {
 std::vector<Sector> narrow_sectors(const Mesh& sub, VertexHandle vh, double max_angle) {
   std::vector<Sector> out;
   const Point2 p = point2(sub, vh);
+  // Segments alone are walls; a fan reaching an unconstrained boundary edge (the frozen border) is partial.
+  const WallTest is_wall = [&](HalfedgeHandle spoke) { return is_constrained(sub, sub.edge_handle(spoke)); };
   for (auto start : sub.voh_range(vh)) {
-    if (!is_constrained(sub, sub.edge_handle(start)) || sub.is_boundary(start)) continue;
-    double angle = 0;
-    HalfedgeHandle h = start;
-    bool closed = false;
-    for (int guard = 0; guard < 256; ++guard) {
-      const HalfedgeHandle back = sub.prev_halfedge_handle(h);  // ends at vh
-      const Point2 a = point2(sub, sub.to_vertex_handle(h)) - p, b = point2(sub, sub.from_vertex_handle(back)) - p;
-      angle += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-      h = sub.opposite_halfedge_handle(back);
-      if (sub.is_boundary(h) && !is_constrained(sub, sub.edge_handle(h))) break;  // frozen border: partial fan
-      if (is_constrained(sub, sub.edge_handle(h)) || h == start) {
-        closed = h != start;
-        break;
-      }
-    }
-    if (closed && angle < max_angle)
-      out.push_back(Sector{{(point2(sub, sub.to_vertex_handle(start)) - p).normalized(), (point2(sub, sub.to_vertex_handle(h)) - p).normalized()}, angle});
+    if (!is_wall(start) || sub.is_boundary(start)) continue;
+    const SectorSweep sector = sweep_sector(sub, start, is_wall, 256);
+    if (sector.how == SectorEnd::Wall && sector.radians < max_angle)
+      out.push_back(Sector{{(point2(sub, sub.to_vertex_handle(start)) - p).normalized(), (point2(sub, sub.to_vertex_handle(sector.end)) - p).normalized()},
+                           sector.radians});
   }
   return out;
 }

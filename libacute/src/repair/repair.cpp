@@ -1,6 +1,7 @@
 #include <acute/repair/repair.h>
 
 #include <acute/mesh/geometry.h>
+#include <acute/mesh/sectors.h>
 #include <acute/mesh/segments.h>
 #include <acute/ops/delaunay_flips.h>
 #include <acute/ops/insert.h>
@@ -252,36 +253,26 @@ class Repairer {
   /// angle phi split among k triangles cannot meet the bounds: phi / k >= max, or phi / k < min for a
   /// sector not narrower than min. Frozen border vertices of a region copy are skipped by the caller.
   std::size_t infeasible_sectors(const Mesh& sub, VertexHandle vh) const {
-    auto is_wall = [&](HalfedgeHandle out) {
-      return is_constrained(sub, sub.edge_handle(out)) || sub.is_boundary(sub.opposite_halfedge_handle(out));
-    };
     HalfedgeHandle start;
     for (auto heh : sub.voh_range(vh))
-      if (!sub.is_boundary(heh) && is_wall(heh)) start = heh;
+      if (!sub.is_boundary(heh) && is_segment_or_boundary(sub, heh)) start = heh;
     const bool closed = !start.is_valid();  // no wall: one sector, the full star
     if (closed) {
       if (sub.is_boundary(vh)) return 0;
       start = sub.halfedge_handle(vh);
     }
+    const WallTest is_wall = [&](HalfedgeHandle out) { return !closed && is_segment_or_boundary(sub, out); };
     std::size_t count = 0;
-    double phi = 0;
-    int k = 0;
-    const Point2 p = point2(sub, vh);
-    HalfedgeHandle h = start;
-    for (int guard = 0; guard < 64; ++guard) {
-      const HalfedgeHandle back = sub.prev_halfedge_handle(h);
-      phi += angles_deg(p, point2(sub, sub.to_vertex_handle(h)), point2(sub, sub.from_vertex_handle(back)))[0];
-      ++k;
-      h = sub.opposite_halfedge_handle(back);
-      const bool end = h == start || sub.is_boundary(h) || (!closed && is_wall(h));
-      if (end) {
-        const double share = phi / k;
-        if (share >= bounds_.max_deg - bounds_.margin_deg || (phi >= bounds_.min_deg && share < bounds_.min_deg)) ++count;
-        phi = 0;
-        k = 0;
-        if (h == start || sub.is_boundary(h)) break;
-        if (sub.is_boundary(h)) break;
-      }
+    int budget = 64;  // faces swept over all the sectors
+    // Sector after sector counter-clockwise, until back at the start or at the boundary.
+    for (HalfedgeHandle h = start;;) {
+      const SectorSweep sector = sweep_sector(sub, h, is_wall, budget);
+      if (sector.how == SectorEnd::Unfinished) break;
+      budget -= sector.triangles;
+      const double share = sector.degrees / sector.triangles;
+      if (share >= bounds_.max_deg - bounds_.margin_deg || (sector.degrees >= bounds_.min_deg && share < bounds_.min_deg)) ++count;
+      h = sector.end;
+      if (h == start || sub.is_boundary(h)) break;
     }
     return count;
   }

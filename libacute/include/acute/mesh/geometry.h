@@ -4,7 +4,9 @@
 
 #include <acute/mesh/mesh.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace acute {
 
@@ -21,6 +23,22 @@ std::array<Point2, 3> face_points(const Mesh& mesh, FaceHandle fh);
 /// Twice the signed area of abc (floating point; for measures, not decisions).
 inline double signed_area2(const Point2& a, const Point2& b, const Point2& c) {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
+/// The point of segment ab nearest to p (a when the segment is a point).
+inline Point2 nearest_on_segment(const Point2& p, const Point2& a, const Point2& b) {
+  const Point2 d = b - a;
+  const double l2 = d.squaredNorm();
+  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
+  return a + t * d;
+}
+
+/// Squared distance from p to segment ab, and the distance.
+inline double distance2_to_segment(const Point2& p, const Point2& a, const Point2& b) {
+  return (p - nearest_on_segment(p, a, b)).squaredNorm();
+}
+inline double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
+  return std::sqrt(distance2_to_segment(p, a, b));
 }
 
 }  // namespace acute

@@ -1,0 +1,41 @@
+// Layer: mesh. The sectors at a vertex: the fans of faces between consecutive "wall" spokes
+// (outgoing halfedges on input segments, on the mesh boundary, ... as the caller decides), swept
+// counter-clockwise. The angles are floating-point measures for choosing, not for topology.
+#pragma once
+
+#include <acute/mesh/mesh.h>
+
+#include <cstdint>
+#include <functional>
+
+namespace acute {
+
+/// How a sweep ended.
+enum class SectorEnd : std::uint8_t {
+  Wall,        ///< at the next wall spoke: a whole sector
+  Closed,      ///< back at the start spoke without meeting another wall (the full star)
+  Border,      ///< at a mesh boundary halfedge that is no wall: a partial fan (e.g. a frozen border)
+  Unfinished   ///< max_triangles faces swept without reaching an end
+};
+
+struct SectorSweep {
+  double radians = 0;  ///< sum of the corner angles at the vertex, each atan2(|cross|, dot)
+  double degrees = 0;  ///< the same corners, each converted to degrees before summing
+  int triangles = 0;   ///< faces swept
+  HalfedgeHandle end;  ///< the spoke it stopped at (outgoing from the vertex; without a face at a Border)
+  SectorEnd how = SectorEnd::Unfinished;
+};
+
+/// Whether a spoke (a halfedge going out of the vertex) bounds sectors.
+using WallTest = std::function<bool(HalfedgeHandle)>;
+
+/// The usual wall: the spoke's edge is an input segment (constrained) or on the mesh boundary.
+bool is_segment_or_boundary(const Mesh& mesh, HalfedgeHandle spoke);
+
+/// Sweeps the faces around the vertex `start` leaves, counter-clockwise from `start` (a spoke with
+/// a face on its left; it need not be a wall), one face at a time, and stops at the first spoke
+/// that is `start` again (Closed), else one is_wall accepts (Wall), else a boundary halfedge
+/// (Border); Unfinished after max_triangles faces. A start without a face: Border, no triangles.
+SectorSweep sweep_sector(const Mesh& mesh, HalfedgeHandle start, const WallTest& is_wall, int max_triangles = 1024);
+
+}  // namespace acute

@@ -1,0 +1,51 @@
+#include <acute/mesh/sectors.h>
+
+#include <cmath>
+
+namespace acute {
+
+namespace {
+constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
+}  // namespace
+
+bool is_segment_or_boundary(const Mesh& mesh, HalfedgeHandle spoke) {
+  const EdgeHandle eh = mesh.edge_handle(spoke);
+  return is_constrained(mesh, eh) || mesh.is_boundary(eh);
+}
+
+SectorSweep sweep_sector(const Mesh& mesh, HalfedgeHandle start, const WallTest& is_wall, int max_triangles) {
+  SectorSweep s;
+  s.end = start;
+  if (mesh.is_boundary(start)) {
+    s.how = SectorEnd::Border;
+    return s;
+  }
+  const Point2 p = point2(mesh, mesh.from_vertex_handle(start));
+  HalfedgeHandle h = start;
+  while (s.triangles < max_triangles) {
+    const HalfedgeHandle back = mesh.prev_halfedge_handle(h);  // ends at the vertex
+    const Point2 u = point2(mesh, mesh.to_vertex_handle(h)) - p, v = point2(mesh, mesh.from_vertex_handle(back)) - p;
+    const double angle = std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
+    s.radians += angle;
+    s.degrees += angle * kDegPerRad;
+    ++s.triangles;
+    h = mesh.opposite_halfedge_handle(back);  // the next spoke counter-clockwise
+    s.end = h;
+    if (h == start) {
+      s.how = SectorEnd::Closed;
+      return s;
+    }
+    if (is_wall(h)) {
+      s.how = SectorEnd::Wall;
+      return s;
+    }
+    if (mesh.is_boundary(h)) {
+      s.how = SectorEnd::Border;
+      return s;
+    }
+  }
+  s.how = SectorEnd::Unfinished;
+  return s;
+}
+
+}  // namespace acute
