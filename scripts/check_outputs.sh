@@ -3,7 +3,8 @@
 #  1. every mesh the tests wrote under BUILD/test-output that has a sibling NAME.meshcheck file holding
 #     the meshcheck arguments for it (e.g. "--domain /path/in.poly --tolerance 1e-10");
 #  2. the CLI on the shared domains (CDT of every classic domain and CG:SHOP instance, and the default
-#     pipeline on the classic domains), when the CLI supports them.
+#     pipeline on the classic domains), when the CLI supports them;
+#  3. `acute repair` of every shared mesh, with the bounds.
 # Fails on any non-zero verdict. Usage: scripts/check_outputs.sh [BUILD_DIR]
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -79,6 +80,20 @@ if [ -x "$acute" ]; then
     fi
   done
   echo "check_outputs: acute pipeline: $met of $runs classic domains meet [30, 90) at ~2000 vertices (all outputs checked for validity); well-centred dual on $dual_ok of those $met"
+fi
+
+# 3b. `acute repair` on the meshes made by other software (shared/domains/meshes): each repaired
+# mesh must conform to its input and meet [30, 90) (issue 6).
+if [ -x "$acute" ] && [ -d "$shared/domains/meshes" ]; then
+  repaired=0
+  for m in "$shared"/domains/meshes/*.off "$shared"/domains/meshes/*.obj; do
+    [ -f "$m" ] || continue
+    name=$(basename "${m%.*}")
+    "$acute" repair "$m" -o "$out/repair_$name.off" -q --time-limit 120 >/dev/null 2>&1
+    check "$out/repair_$name.off" --domain "$m" --tolerance 1e-10 --min-angle 30 --max-angle 90
+    repaired=$((repaired + 1))
+  done
+  echo "check_outputs: acute repair of $repaired shared meshes judged with [30, 90)"
 fi
 
 # 4. Our quality report against the referee's.
