@@ -3,7 +3,7 @@
 # domain, aside) with CGAL Mesh_2 (the
 # largest min-angle bound that terminates) and gmsh Frontal-Delaunay at ~N vertices
 # (bench/compare/run_compare.py --keep-meshes), repairs each with `acute repair`, and judges the
-# repaired mesh with meshcheck against the original .poly and [30, 90).
+# repaired mesh with meshcheck against the mesh it was given (region and boundary) and [30, 90).
 #
 #   scripts/repair_peer_meshes.sh [N=2000]      env: ACUTE, CGAL (driver), OUT, TIME_LIMIT (s per repair, default 60),
 #                                              DOMAINS (comma list of meshes/ names; default every classic one),
@@ -36,7 +36,9 @@ while IFS= read -r mesh; do
   fixed="$out/${base}_repaired.off"
   "$acute" repair "$mesh" -o "$fixed" -q --time-limit "$limit" ${REPAIR_ARGS:-} >/dev/null 2>"$out/${base}_repair.err"
   code=$?
-  if python3 "$meshcheck" "$fixed" --domain "meshes/$domain.poly" --tolerance 1e-10 --min-angle 30 --max-angle 90 >"$out/${base}_check.txt" 2>&1; then
+  # Judged against the input mesh (its region and boundary, as issue 6 asks): an OFF file does not
+  # carry the .poly's interior segments, which the repair is then free to cross.
+  if python3 "$meshcheck" "$fixed" --domain "$mesh" --tolerance 1e-10 --min-angle 30 --max-angle 90 >"$out/${base}_check.txt" 2>&1; then
     pass=$((pass + 1))
     echo "$base: ok (repair exit $code)"
   else
