@@ -67,7 +67,9 @@ std::string parse_svg(const std::string& path) {
       "bars = sum(int(r.get('data-count')) for r in root.iter(ns + 'rect') if r.get('class') == 'bar')\n"
       "labels = len(root.findall('.//' + ns + 'circle'))\n"
       "print('ok', bars, labels)\n";
-  const std::string py = out("parse_svg.py");
+  // One script per SVG: tests run in parallel, and a shared script file could be read while
+  // another test rewrites it.
+  const std::string py = path + ".parse.py";
   std::ofstream(py) << script;
   return shell("python3 " + quoted(py) + " " + quoted(path) + " 2>&1");
 }
