@@ -54,6 +54,15 @@ std::size_t triangles_at(const Mesh& mesh, VertexHandle vh) {
   return n;
 }
 
+/// Writes sub back into mesh: the mesh stays valid, conforming and of the same area.
+void expect_commit_keeps_the_mesh(Mesh& mesh, const detail::Region& region, const Mesh& sub, double area) {
+  detail::commit_region(mesh, region, sub);
+  mesh.garbage_collection();
+  EXPECT_MESH_VALID(mesh);
+  EXPECT_EQ(detail::constraint_violation(mesh), "");
+  EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
+}
+
 TEST(RebuildWedge, sharp_apex_gets_an_isosceles_triangle_and_three_triangles_at_its_base) {
   for (double apex_deg : {12.0, 20.0, 45.0}) {
     SCOPED_TRACE(apex_deg);
@@ -74,11 +83,7 @@ TEST(RebuildWedge, sharp_apex_gets_an_isosceles_triangle_and_three_triangles_at_
     const double r0 = point2(sub, base[0]).norm(), r1 = point2(sub, base[1]).norm();
     EXPECT_NEAR(r0, r1, 1e-12 * r0);
     for (auto vh : base) EXPECT_EQ(triangles_at(sub, vh), 3u);
-    detail::commit_region(mesh, region, sub);
-    mesh.garbage_collection();
-    EXPECT_MESH_VALID(mesh);
-    EXPECT_EQ(detail::constraint_violation(mesh), "");
-    EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
+    expect_commit_keeps_the_mesh(mesh, region, sub, area);
   }
 }
 
@@ -126,11 +131,7 @@ TEST(RebuildHub, wedge_between_interior_segments_gets_an_isosceles_apex) {
       }
     }
     EXPECT_EQ(isosceles, 1u) << "one triangle at the apex inside the wedge";
-    detail::commit_region(mesh, region, sub);
-    mesh.garbage_collection();
-    EXPECT_MESH_VALID(mesh);
-    EXPECT_EQ(detail::constraint_violation(mesh), "");
-    EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
+    expect_commit_keeps_the_mesh(mesh, region, sub, area);
   }
 }
 

@@ -607,6 +607,20 @@ void reduce(Triangulation& best, const NonObtuseParams& params, std::size_t cap,
 
 }  // namespace
 
+
+namespace {
+
+/// The result's mesh and counts from the final triangulation.
+void finish(const Triangulation& tr, const Mesh& cdt, NonObtuseResult& result) {
+  result.mesh = tr.to_mesh(cdt, &result.exact);
+  result.n_steiner = tr.n_steiner();
+  result.n_obtuse = tr.n_obtuse();
+  result.n_right = tr.n_right();
+  result.ok = result.n_obtuse == 0;
+}
+
+}  // namespace
+
 NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtuseParams& params) {
   const auto t0 = Clock::now();
   const auto deadline = params.time_limit_s > 0
@@ -661,11 +675,7 @@ NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtusePa
       pruner.prune();
     }
   }
-  result.mesh = best.to_mesh(cdt, &result.exact);
-  result.n_steiner = best.n_steiner();
-  result.n_obtuse = best.n_obtuse();
-  result.n_right = best.n_right();
-  result.ok = result.n_obtuse == 0;
+  finish(best, cdt, result);
   return result;
 }
 
@@ -721,11 +731,7 @@ NonObtuseResult non_obtuse_from_start(const Domain& domain, const Mesh& start, c
     NonObtuseSolver again(tr, params, deadline);
     again.prune();
   }
-  result.mesh = tr.to_mesh(cdt, &result.exact);
-  result.n_steiner = tr.n_steiner();
-  result.n_obtuse = tr.n_obtuse();
-  result.n_right = tr.n_right();
-  result.ok = result.n_obtuse == 0;
+  finish(tr, cdt, result);
   return result;
 }
 
