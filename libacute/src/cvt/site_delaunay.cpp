@@ -4,11 +4,24 @@
 #include <acute/delaunay/cdt.h>
 #include <acute/predicates/predicates.h>
 
+#include <algorithm>
+
 namespace acute::detail {
 
 void SiteDelaunay::update(const std::vector<Point2>& points, bool same_sites) {
-  const bool repairable = same_sites && points.size() == points_.size() && !tri_.empty();
-  points_ = points;
+  const bool repairable = same_sites && points.size() == n_sites_ && !tri_.empty();
+  n_sites_ = points.size();
+  if (repairable) {
+    std::copy(points.begin(), points.end(), points_.begin());  // the frame stays where it was
+  } else {
+    points_ = points;
+    // The frame: four points far outside the sites' bounding box.
+    Point2 lo = points.empty() ? Point2(0, 0) : points.front(), hi = lo;
+    for (const Point2& p : points) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const Point2 c = 0.5 * (lo + hi);
+    const double r = 8.0 * std::max({hi.x() - lo.x(), hi.y() - lo.y(), 1e-300});
+    for (const Point2& corner : {Point2(-r, -r), Point2(r, -r), Point2(r, r), Point2(-r, r)}) points_.push_back(c + corner);
+  }
   if (repairable && all_counter_clockwise()) {
     lawson();
   } else {
@@ -115,26 +128,27 @@ void SiteDelaunay::flip(int t, int i) {
 }
 
 void SiteDelaunay::build_adjacency() {
-  const std::size_t n = points_.size();
+  const std::size_t n = n_sites_;
+  const auto site = [&](int v) { return static_cast<std::size_t>(v) < n; };
   start_.assign(n + 1, 0);
-  // Every directed edge a -> b of a triangle gives b to a; a hull edge also gives a to b (its twin
-  // is missing).
+  // Every directed edge a -> b of a triangle gives b to a (the frame's triangles close the hull,
+  // so every edge between sites has both directions); the frame is nobody's neighbour.
   for (std::size_t t = 0; t < tri_.size(); ++t)
     for (int i = 0; i < 3; ++i) {
-      ++start_[static_cast<std::size_t>(tri_[t][static_cast<std::size_t>((i + 1) % 3)]) + 1];
-      if (nbr_[t][static_cast<std::size_t>(i)] < 0) ++start_[static_cast<std::size_t>(tri_[t][static_cast<std::size_t>((i + 2) % 3)]) + 1];
+      const int a = tri_[t][static_cast<std::size_t>((i + 1) % 3)], b = tri_[t][static_cast<std::size_t>((i + 2) % 3)];
+      if (site(a) && site(b)) ++start_[static_cast<std::size_t>(a) + 1];
     }
   for (std::size_t i = 0; i < n; ++i) start_[i + 1] += start_[i];
   adjacent_.resize(static_cast<std::size_t>(start_[n]));
   vertex_tri_.assign(n, -1);
   for (std::size_t t = 0; t < tri_.size(); ++t)
-    for (int v : tri_[t]) vertex_tri_[static_cast<std::size_t>(v)] = static_cast<int>(t);
+    for (int v : tri_[t])
+      if (site(v)) vertex_tri_[static_cast<std::size_t>(v)] = static_cast<int>(t);
   incident_start_.assign(start_.begin(), start_.end() - 1);  // fill cursor
   for (std::size_t t = 0; t < tri_.size(); ++t)
     for (int i = 0; i < 3; ++i) {
       const int a = tri_[t][static_cast<std::size_t>((i + 1) % 3)], b = tri_[t][static_cast<std::size_t>((i + 2) % 3)];
-      adjacent_[static_cast<std::size_t>(incident_start_[static_cast<std::size_t>(a)]++)] = b;
-      if (nbr_[t][static_cast<std::size_t>(i)] < 0) adjacent_[static_cast<std::size_t>(incident_start_[static_cast<std::size_t>(b)]++)] = a;
+      if (site(a) && site(b)) adjacent_[static_cast<std::size_t>(incident_start_[static_cast<std::size_t>(a)]++)] = b;
     }
 }
 

@@ -16,23 +16,28 @@ namespace acute::detail {
 
 class SiteDelaunay {
  public:
-  /// Makes this the Delaunay triangulation of `points`. When the previous triangulation was of
-  /// the same number of points (same identities: `same_sites`) and every triangle is still
-  /// counter-clockwise at the new positions, it is repaired by Lawson flips (exact incircle),
-  /// which is linear for small moves; otherwise it is rebuilt from scratch.
+  /// Makes this the Delaunay triangulation of `points` and a frame of four far points around them
+  /// (ids points.size() .. + 3): with the frame, nearly collinear sites on a straight boundary
+  /// segment (collinear but for rounding) make no sliver on the hull, which their sliding along
+  /// the segment would turn over. When the previous triangulation was of the same number of
+  /// points (same identities: `same_sites`) and every triangle is still counter-clockwise at the
+  /// new positions, it is repaired by Lawson flips (exact incircle), which is linear for small
+  /// moves; otherwise it is rebuilt from scratch.
   void update(const std::vector<Point2>& points, bool same_sites);
 
-  /// The Delaunay neighbours of site i (every site sharing an edge with it).
+  /// The Delaunay neighbours of site i (every site sharing an edge with it; never the frame).
   std::pair<const int*, const int*> neighbours(int i) const {
     const auto b = static_cast<std::size_t>(start_[static_cast<std::size_t>(i)]);
     const auto e = static_cast<std::size_t>(start_[static_cast<std::size_t>(i) + 1]);
     return {adjacent_.data() + b, adjacent_.data() + e};
   }
 
+  /// Every triangle, the frame's too: a corner >= num_sites() is a frame point.
   const std::vector<std::array<int, 3>>& triangles() const { return tri_; }
+  std::size_t num_sites() const { return n_sites_; }
   /// The triangle across the edge opposite corner i of t; -1 on the hull.
   int across(int t, int i) const { return nbr_[static_cast<std::size_t>(t)][static_cast<std::size_t>(i)]; }
-  /// A triangle incident to site i (-1 if none).
+  /// A triangle incident to site i.
   int vertex_triangle(int i) const { return vertex_tri_[static_cast<std::size_t>(i)]; }
 
   std::size_t rebuilds() const { return rebuilds_; }
@@ -45,7 +50,8 @@ class SiteDelaunay {
   void flip(int t, int i);
   void build_adjacency();
 
-  std::vector<Point2> points_;
+  std::vector<Point2> points_;  ///< the sites, then the frame
+  std::size_t n_sites_ = 0;
   std::vector<std::array<int, 3>> tri_;  ///< counter-clockwise vertex ids
   std::vector<std::array<int, 3>> nbr_;  ///< nbr_[t][i]: across the edge opposite corner i; -1 on the hull
   std::vector<int> start_, adjacent_;    ///< CSR of the neighbours

@@ -131,6 +131,11 @@ void integrate_whole_cells(const Mesh& mesh, const SizeField& field, CellScratch
   s.centre_ok.resize(nt);
   s.centre_rho.assign(nt, -1.0);
   for (std::size_t t = 0; t < nt; ++t) {
+    if (static_cast<std::size_t>(std::max({tris[t][0], tris[t][1], tris[t][2]})) >= ns) {  // a frame triangle
+      s.centre_ok[t] = false;
+      s.centre[t] = Point2(0, 0);
+      continue;
+    }
     const Point2& a = s.points[static_cast<std::size_t>(tris[t][0])];
     const Point2 b = s.points[static_cast<std::size_t>(tris[t][1])] - a, c = s.points[static_cast<std::size_t>(tris[t][2])] - a;
     const double d = 2.0 * (b.x() * c.y() - b.y() * c.x());

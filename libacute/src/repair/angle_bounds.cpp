@@ -64,11 +64,17 @@ bool min_exempt_corner(const Mesh& mesh, VertexHandle vh, FaceHandle fh, double 
 
 double triangle_margin(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds, bool exempt_min) {
   const auto p = face_points(mesh, fh);
-  const auto a = angles_deg(p[0], p[1], p[2]);
-  const double lo = *std::min_element(a.begin(), a.end()), hi = *std::max_element(a.begin(), a.end());
-  double margin = bounds.max_deg - hi;
-  if (!exempt_min) margin = std::min(margin, lo - bounds.min_deg);
-  return margin;
+  auto margin_of = [&](const std::array<double, 3>& a) {
+    const double lo = std::min({a[0], a[1], a[2]}), hi = std::max({a[0], a[1], a[2]});
+    double margin = bounds.max_deg - hi;
+    if (!exempt_min) margin = std::min(margin, lo - bounds.min_deg);
+    return margin;
+  };
+  // The polynomial angles are within 2e-6 degrees of atan2's: away from the bad-or-not threshold
+  // they decide the same, and only near it is the referee's formula worth its cost.
+  const double fast = margin_of({approx_angle_deg(p[0], p[1], p[2]), approx_angle_deg(p[1], p[2], p[0]), approx_angle_deg(p[2], p[0], p[1])});
+  if (std::abs(fast - bounds.margin_deg) > 1e-4) return fast;
+  return margin_of(angles_deg(p[0], p[1], p[2]));
 }
 
 bool is_bad_triangle(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds, const std::vector<bool>& forced) {

@@ -1,5 +1,6 @@
 #include <acute/repair/relocation.h>
 
+#include <acute/mesh/geometry.h>
 #include <acute/mesh/segments.h>
 #include <acute/ops/relocate.h>
 
@@ -17,25 +18,6 @@ bool face_exempt(const Mesh& mesh, HalfedgeHandle heh, const std::vector<bool>& 
     h = mesh.next_halfedge_handle(h);
     if (h == end) return false;
   }
-}
-
-/// Angle (degrees) at a between b and c to about 1e-6 degrees: the relocation energy only compares
-/// positions, so it need not round as meshcheck does (angles_deg does, for the bounds), and the
-/// polynomial costs a fraction of atan2 in the pattern search's hot loop.
-double energy_angle(const Point2& a, const Point2& b, const Point2& c) {
-  constexpr double kDeg = 57.29577951308232;
-  constexpr double kHalfPi = 1.5707963267948966, kPi = 3.141592653589793;
-  const Point2 u = b - a, v = c - a;
-  const double y = std::abs(u.x() * v.y() - u.y() * v.x()), x = u.dot(v), ax = std::abs(x);
-  if (!(y > 0) && !(ax > 0)) return 0;
-  // atan on [0, 1] (Abramowitz & Stegun 4.4.49, |error| <= 2e-8 rad), folded to [0, pi].
-  const bool steep = y > ax;
-  const double t = steep ? ax / y : y / ax, t2 = t * t;
-  double r = t * (1 + t2 * (-0.3333314528 + t2 * (0.1999355085 + t2 * (-0.1420889944 + t2 * (0.1065626393 +
-                    t2 * (-0.0752896400 + t2 * (0.0429096138 + t2 * (-0.0161657367 + t2 * 0.0028662257))))))));
-  if (steep) r = kHalfPi - r;
-  if (x < 0) r = kPi - r;
-  return r * kDeg;
 }
 
 }  // namespace
@@ -59,7 +41,7 @@ double star_energy(const Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
     const FaceHandle fh = mesh.face_handle(heh);
     const VertexHandle corner[3] = {vh, mesh.to_vertex_handle(heh), mesh.to_vertex_handle(mesh.next_halfedge_handle(heh))};
     const Point2 p0 = point2(mesh, corner[0]), p1 = point2(mesh, corner[1]), p2 = point2(mesh, corner[2]);
-    const double angles[3] = {energy_angle(p0, p1, p2), energy_angle(p1, p2, p0), energy_angle(p2, p0, p1)};
+    const double angles[3] = {approx_angle_deg(p0, p1, p2), approx_angle_deg(p1, p2, p0), approx_angle_deg(p2, p0, p1)};
     for (int k = 0; k < 3; ++k) {
       double m = bounds.max_deg - angles[k];
       if (!min_exempt_corner(mesh, corner[k], fh, bounds.min_deg, forced)) m = std::min(m, angles[k] - bounds.min_deg);

@@ -58,7 +58,7 @@ class Repairer {
       for (const auto& c : clusters) bad += c.bad.size();
       if (it == 0) result_.bad_before = bad;
       result_.iterations = it;
-      const bool global = it < params_.global_iterations;
+      const bool global = it < params_.global_iterations && bad * params_.global_ratio >= mesh_.n_faces();
       if (params_.observer) params_.observer(RepairProgress{it, bad, global});
       if (bad < best_bad) {
         best_bad = bad;

@@ -21,6 +21,9 @@ struct RepairParams {
   AngleBounds bounds;
   int max_iterations = 300;
   int global_iterations = 5;      ///< sweeps over the whole mesh before going local
+  /// The global sweeps also end once fewer than one triangle in this many is bad: a sweep costs the
+  /// whole mesh, the local phase only the neighbourhoods of what is left.
+  std::size_t global_ratio = 10'000;
   std::size_t max_vertices = 50'000'000;
   double time_limit_s = 0;         ///< 0: none
   std::function<void(const RepairProgress&)> observer;
