@@ -77,12 +77,33 @@ double triangle_margin(const Mesh& mesh, FaceHandle fh, const AngleBounds& bound
   return margin_of(angles_deg(p[0], p[1], p[2]));
 }
 
+namespace {
+
+/// True when every angle of abc is clearly (by 1e-3 degrees) inside the bounds: squared cosines
+/// against squared thresholds, no square root and no arctangent. False decides nothing.
+bool clearly_within(const std::array<Point2, 3>& p, const AngleBounds& bounds, bool exempt_min) {
+  constexpr double kRad = 3.14159265358979323846 / 180.0;
+  const double c_max = std::cos((bounds.max_deg - 1e-3) * kRad), c_min = std::cos((bounds.min_deg + 1e-3) * kRad);
+  if (!(c_max >= 0) || (!exempt_min && !(c_min > 0))) return false;  // unusual bounds: the full test
+  for (int i = 0; i < 3; ++i) {
+    const Point2 u = p[(i + 1) % 3] - p[i], v = p[(i + 2) % 3] - p[i];
+    const double dot = u.dot(v), lengths = u.squaredNorm() * v.squaredNorm();
+    // Below max: cos > c_max. At least min: cos < c_min (always so when the cosine is <= 0).
+    if (!(dot > 0) || !(dot * dot > c_max * c_max * lengths)) return false;
+    if (!exempt_min && !(dot * dot < c_min * c_min * lengths)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool is_bad_triangle(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds, const std::vector<bool>& forced) {
   bool exempt = false;
   for (auto vh : mesh.fv_range(fh)) {
     const auto i = static_cast<std::size_t>(vh.idx());
     exempt = exempt || (i < forced.size() && forced[i]);
   }
+  if (clearly_within(face_points(mesh, fh), bounds, exempt)) return false;
   return triangle_margin(mesh, fh, bounds, exempt) < bounds.margin_deg;
 }
 
