@@ -55,7 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string problem = verify_cdt(result.mesh, d, check);
   if (!problem.empty()) fail("generate_mesh: " + problem);
   const double want = acute::mesh_area(cdt), got = acute::mesh_area(result.mesh);
-  if (!(std::abs(got - want) <= 1e-9 * std::abs(want))) fail("generate_mesh: area " + std::to_string(got) + " != CDT area " + std::to_string(want));
+  if (!(std::abs(got - want) <= area_slack(result.mesh, want))) fail("generate_mesh: area " + num(got) + " != CDT area " + num(want) + " (allowed difference " + num(area_slack(result.mesh, want)) + ")");
   if (result.status == acute::MeshStatus::BoundsNotMet && result.remaining.empty()) fail("generate_mesh: bounds not met but no triangle listed");
   return 0;
 }
