@@ -1,7 +1,7 @@
 // Layer: mesh. Boundary loops of a mesh whose region may touch itself at a vertex (a pinch vertex:
 // several fans of faces meeting only there, e.g. a hole touching the outer boundary, or two parts
 // of the domain sharing a corner). OpenMesh holds such a vertex with several boundary gaps; the
-// order of its fans depends on the order faces were added.
+// order of its fans depends on the order faces were added (order_pinch_vertices in mesh.h fixes it).
 #pragma once
 
 #include <acute/mesh/mesh.h>
@@ -10,12 +10,6 @@
 #include <vector>
 
 namespace acute {
-
-/// Relinks the boundary halfedges at every pinch vertex so that each gap between two fans is
-/// closed by the boundary halfedges that bound it geometrically (exact angular order), as a mesh
-/// carved from a triangulation has them. Call after building a mesh face by face. Returns the
-/// number of pinch vertices.
-std::size_t order_pinch_vertices(Mesh& mesh);
 
 /// The boundary as simple closed loops of vertices in boundary-halfedge order (region on the
 /// right): a walk through a pinch vertex twice is split there, so a vertex occurs at most once per
