@@ -7,7 +7,12 @@
 #
 #   scripts/repair_peer_meshes.sh [N=2000]      env: ACUTE, CGAL (driver), OUT, TIME_LIMIT (s per repair, default 60),
 #                                              DOMAINS (comma list of meshes/ names; default every classic one),
-#                                              REPAIR_ARGS (more `acute repair` options, e.g. --feature-angle 0.5)
+#                                              REPAIR_ARGS (more `acute repair` options, e.g. --seed 2)
+#
+# --feature-angle does not belong in REPAIR_ARGS here: meshcheck judges against the given mesh, whose
+# every boundary vertex is then a required input point, and a feature angle removes some of them
+# (meshcheck: "input point ... is not a mesh vertex"; at 0.5 degrees it also merges the gently
+# curved polylines of trivial.poly into long straight segments, changing the region).
 #
 # Needs the CGAL driver (cmake --build build --target cgal_mesh2; libcgal-dev) and gmsh; a mesher
 # that is missing is skipped by run_compare.py. Prints one line per mesh and a summary; exit 1 when

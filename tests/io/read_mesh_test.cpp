@@ -1,13 +1,17 @@
 #include "io/io_test_util.h"
 
 #include <acute/io/io.h>
+#include <acute/mesh/boundary.h>
+#include <acute/mesh/check.h>
 #include <acute/predicates/predicates.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <numeric>
 
 using namespace acute;
 using acute::test::bad;
@@ -118,7 +122,7 @@ TEST(ReadMesh, bad_inputs_name_file_line_and_problem) {
       {"face_index_out_of_range.obj", {"face_index_out_of_range.obj:4:", "face 1 uses vertex 4", "3 vertices"}},
       {"repeated_vertex_face.off", {"repeated_vertex_face.off:6:", "face 0 (vertices 0 1 1) repeats a vertex"}},
       {"nonmanifold_edge.off", {"nonmanifold_edge.off:11:", "face 2 (vertices 0 1 3) is a third face on edge 0-1"}},
-      {"nonmanifold_vertex.off", {"nonmanifold_vertex.off:", "vertex 0 is non-manifold"}},
+      {"nonmanifold_vertex.off", {"nonmanifold_vertex.off:15:", "face 4 (vertices 0 5 6) cannot be added", "non-manifold"}},
       {"folded_face.off", {"folded_face.off:11:", "face 2 (vertices 1 2 4) is clockwise"}},
       {"same_direction_edge.off", {"same_direction_edge.off:9:", "face 1 (vertices 0 1 3) uses edge 0-1 in the same direction as face 0"}},
       {"truncated_faces.off", {"truncated_faces.off:", "expected 2 faces, file ends after 1"}},
@@ -134,6 +138,80 @@ TEST(ReadMesh, bad_inputs_name_file_line_and_problem) {
       for (const auto& piece : c.pieces)
         EXPECT_NE(message.find(piece), std::string::npos) << c.file << ": '" << message << "' lacks '" << piece << "'";
     }
+  }
+}
+
+// A pinch vertex (fans of faces meeting only there) is valid input. Whatever order the faces come
+// in, the mesh is read, check_mesh accepts it, its boundary splits into simple loops at the pinch
+// and domain_of_mesh seeds exactly the holes.
+TEST(ReadMesh, pinch_vertices_are_read_in_any_face_order) {
+  struct Case {
+    const char* file;
+    std::vector<std::size_t> loop_sizes;  // sorted
+    std::size_t holes;
+  };
+  for (const Case& c : {Case{"pinch_squares.off", {4, 4}, 0}, Case{"pinch_hole.off", {3, 5}, 1},
+                        Case{"pinch_three_fans.off", {4, 4, 4}, 0}}) {
+    const Mesh base = io::read_mesh(data(c.file));
+    std::vector<std::array<int, 3>> faces;
+    for (auto fh : base.faces()) {
+      std::array<int, 3> t{};
+      int k = 0;
+      for (auto fv : base.fv_range(fh)) t[k++] = fv.idx();
+      faces.push_back(t);
+    }
+    std::vector<std::size_t> order(faces.size());
+    std::iota(order.begin(), order.end(), 0);
+    const std::string path = acute::test::output(std::string("permuted_") + c.file);
+    int permutations = 0;
+    do {
+      {
+        std::ofstream out(path);
+        out << "OFF\n" << base.n_vertices() << ' ' << faces.size() << " 0\n";
+        for (auto vh : base.vertices()) out << base.point(vh)[0] << ' ' << base.point(vh)[1] << " 0\n";
+        for (std::size_t f : order) out << "3 " << faces[f][0] << ' ' << faces[f][1] << ' ' << faces[f][2] << '\n';
+      }
+      const std::string context = std::string(c.file) + " order " + std::to_string(permutations);
+      Mesh m;
+      try {
+        m = io::read_mesh(path);
+      } catch (const std::exception& e) {
+        ADD_FAILURE() << context << ": " << e.what();
+        continue;
+      }
+      EXPECT_EQ(n_faces(m), faces.size()) << context;
+      const CheckReport r = check_mesh(m, CheckLevel::Geometry);
+      EXPECT_TRUE(r.ok()) << context << ": " << r.summary();
+      // Each boundary halfedge into a pinch vertex is followed by the outgoing one that closes the
+      // same gap: no boundary neighbour lies inside the wedge between them (every gap here < 180).
+      for (auto vh : m.vertices()) {
+        if (!is_pinch_vertex(m, vh)) continue;
+        for (auto out : m.voh_range(vh)) {
+          const auto in = m.opposite_halfedge_handle(out);
+          if (!m.is_boundary(in)) continue;
+          const Point2 c0 = point2(m, vh), a = point2(m, m.to_vertex_handle(m.next_halfedge_handle(in))),
+                       b = point2(m, m.from_vertex_handle(in));
+          for (auto nb : m.vv_range(vh)) {
+            const Point2 p = point2(m, nb);
+            EXPECT_FALSE(predicates::orient2d(c0, a, p) == Sign::Positive && predicates::orient2d(c0, p, b) == Sign::Positive)
+                << context << ": vertex " << nb.idx() << " inside the gap closed at vertex " << vh.idx();
+          }
+        }
+      }
+      std::vector<std::size_t> sizes;
+      for (const auto& loop : simple_boundary_loops(m)) sizes.push_back(loop.size());
+      std::sort(sizes.begin(), sizes.end());
+      EXPECT_EQ(sizes, c.loop_sizes) << context;
+      const Domain d = io::domain_of_mesh(m);
+      ASSERT_EQ(d.holes.size(), c.holes) << context;
+      if (c.holes == 1) {  // inside the hole triangle (2, 0), (3, 1), (1, 1)
+        const Point2 h = d.holes[0];
+        EXPECT_TRUE(h.y() < 1 && h.y() > std::abs(h.x() - 2))
+            << context << ": hole seed (" << h.x() << ", " << h.y() << ")";
+      }
+      ++permutations;
+    } while (std::next_permutation(order.begin(), order.end()));
+    EXPECT_GT(permutations, 1) << c.file;
   }
 }
 

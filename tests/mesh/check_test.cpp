@@ -88,12 +88,13 @@ TEST(CheckMesh, deleted_elements_are_skipped) {
   EXPECT_TRUE(r.ok()) << r.summary();
 }
 
-TEST(CheckMesh, bowtie_vertex_is_not_manifold) {
-  // Deleting face 3 of the 2x2 grid leaves vertex 1 = (1, 0) with two fans that share no edge.
+TEST(CheckMesh, pinch_vertex_is_valid) {
+  // Deleting face 3 of the 2x2 grid leaves vertex 1 = (1, 0) with two fans that share no edge:
+  // the region touches itself there (a pinch vertex), which a planar triangulation may do.
   Mesh m = test::grid(2);
   m.delete_face(FaceHandle(3), true);
-  const auto r = check_mesh(m, CheckLevel::Topology);
-  EXPECT_TRUE(mentions(r, "vertex 1: not manifold")) << r.summary();
+  const auto r = check_mesh(m, CheckLevel::Geometry);
+  EXPECT_TRUE(r.ok()) << r.summary();
 }
 
 TEST(CheckMesh, broken_link_is_reported) {

@@ -2,6 +2,7 @@
 // invalid meshes are refused with a message naming the element.
 #include <acute/core/errors.h>
 #include <acute/io/io.h>
+#include <acute/mesh/boundary.h>
 #include <acute/mesh/check.h>
 #include <acute/mesh/geometry.h>
 #include <acute/predicates/predicates.h>
@@ -189,6 +190,36 @@ TEST(RepairMesh, feature_angle_merges_collinear_boundary_vertices) {
   EXPECT_NEAR(a1, a0, 1e-9 * a0) << "region unchanged (the run is exactly straight)";
 }
 
+// Meshes whose region touches itself at a vertex (as gmsh and CGAL write the fish domains): read,
+// repaired to the bounds with the pinch vertex kept where the loops meet, written and read back.
+TEST(RepairMesh, pinch_vertex_meshes_are_repaired_and_keep_the_pinch) {
+  struct Case {
+    const char* file;
+    Point2 pinch;
+  };
+  for (const Case& c : {Case{"pinch_squares.off", Point2(1, 1)}, Case{"pinch_hole.off", Point2(2, 0)}})
+    for (double feature : {0.0, 10.0}) {
+      const std::string name = std::string(c.file) + " --feature-angle " + std::to_string(feature);
+      const Mesh in = io::read_mesh(std::string(ACUTE_TEST_DATA_DIR) + "/" + c.file);
+      RepairMeshOptions o;
+      o.feature_angle_deg = feature;
+      const RepairMeshResult r = repair_mesh(in, o);
+      expect_repaired(in, r, name);
+      const auto path = (fs::path(ACUTE_TEST_OUTPUT_DIR) / ("repaired_" + std::string(c.file))).string();
+      io::write_mesh(r.mesh, path);
+      const Mesh back = io::read_mesh(path);
+      EXPECT_EQ(conforms(in, back, false), "") << name << ", read back";
+      int pinches = 0;
+      for (auto vh : back.vertices())
+        if (is_pinch_vertex(back, vh)) {
+          ++pinches;
+          EXPECT_EQ(point2(back, vh), c.pinch) << name;
+        }
+      EXPECT_EQ(pinches, 1) << name;
+      EXPECT_EQ(simple_boundary_loops(back).size(), 2u) << name;
+    }
+}
+
 TEST(RepairMesh, shared_meshes_conform_and_meet_the_bounds) {
   const fs::path dir = fs::path(ACUTE_SHARED_DIR) / "domains" / "meshes";
   if (!fs::is_directory(dir)) GTEST_SKIP() << dir << " absent";
@@ -267,7 +298,7 @@ TEST(RepairMeshInvalid, empty_and_bad_features_are_refused) {
 
 TEST(RepairMeshInvalid, non_manifold_files_are_refused_naming_the_element) {
   const fs::path bad = fs::path(ACUTE_TEST_DATA_DIR) / "bad";
-  for (const char* file : {"nonmanifold_edge.off", "nonmanifold_vertex.off", "folded_face.off"}) {
+  for (const char* file : {"nonmanifold_edge.off", "nonmanifold_vertex.off", "overlapping_fans.off", "folded_face.off"}) {
     try {
       const Mesh m = io::read_mesh((bad / file).string());
       repair_mesh(m);

@@ -3,6 +3,7 @@
 
 #include <acute/core/errors.h>
 #include <acute/io/io.h>
+#include <acute/mesh/boundary.h>
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
@@ -244,20 +245,15 @@ Domain domain_of_mesh(const Mesh& mesh) {
     d.point_markers.push_back(mesh.data(vh).marker);
     boundary_vertices.push_back(vh);
   }
-  std::vector<char> seen(mesh.n_halfedges(), 0);
-  std::vector<std::vector<int>> hole_loops;
-  for (auto heh : mesh.halfedges()) {
-    if (!mesh.is_boundary(heh) || seen[heh.idx()]) continue;
+  // Simple loops (split at pinch vertices), so that the lowest corner of each is strictly convex.
+  for (const auto& vloop : simple_boundary_loops(mesh)) {
     std::vector<int> loop;
-    auto h = heh;
-    do {
-      seen[h.idx()] = 1;
-      const int a = index[mesh.from_vertex_handle(h).idx()], b = index[mesh.to_vertex_handle(h).idx()];
-      loop.push_back(a);
-      d.segments.push_back({a, b});
-      d.segment_markers.push_back(mesh.data(mesh.edge_handle(h)).marker);
-      h = mesh.next_halfedge_handle(h);
-    } while (h != heh && !seen[h.idx()]);
+    for (std::size_t k = 0; k < vloop.size(); ++k) {
+      const VertexHandle u = vloop[k], w = vloop[(k + 1) % vloop.size()];
+      loop.push_back(index[u.idx()]);
+      d.segments.push_back({index[u.idx()], index[w.idx()]});
+      d.segment_markers.push_back(mesh.data(mesh.edge_handle(mesh.find_halfedge(u, w))).marker);
+    }
     // Orientation at the lowest-leftmost vertex (strictly convex there): boundary halfedges run
     // clockwise around the domain, so a counter-clockwise loop bounds a hole.
     const std::size_t n = loop.size();

@@ -5,6 +5,7 @@
 
 #include <acute/core/errors.h>
 #include <acute/io/io.h>
+#include <acute/mesh/boundary.h>
 #include <acute/predicates/predicates.h>
 
 #include <OpenMesh/Core/System/omstream.hh>
@@ -130,6 +131,9 @@ Mesh build_mesh(Soup s, const WarningSink& warn) {
     if (i < s.markers.size()) mesh.data(vh).marker = s.markers[i];
   }
   {
+    // OpenMesh adds the faces of a pinch vertex (fans meeting only there: a hole touching the
+    // boundary, parts sharing a corner) in any order, relinking the fans; what it refuses would
+    // make a vertex interior to one fan and a corner of another face (overlapping faces).
     SilenceOpenMesh quiet;
     for (std::size_t f = 0; f < nf; ++f) {
       const auto& t = s.faces[f];
@@ -137,16 +141,11 @@ Mesh build_mesh(Soup s, const WarningSink& warn) {
         throw InvalidInput(at_face(f) + fname(f) + " cannot be added: a vertex of it would be non-manifold");
     }
   }
+  // Its fans come out in insertion order around the vertex: put them in geometric order.
+  order_pinch_vertices(mesh);
   std::size_t unused = 0, first_unused = nv;
-  for (auto vh : mesh.vertices()) {
-    if (mesh.is_isolated(vh)) {
-      if (unused++ == 0) first_unused = static_cast<std::size_t>(vh.idx());
-      continue;
-    }
-    if (!mesh.is_manifold(vh))
-      throw InvalidInput(at_vertex(static_cast<std::size_t>(vh.idx())) + vname(static_cast<std::size_t>(vh.idx())) +
-                         " is non-manifold (its faces form several fans)");
-  }
+  for (auto vh : mesh.vertices())
+    if (mesh.is_isolated(vh) && unused++ == 0) first_unused = static_cast<std::size_t>(vh.idx());
   if (unused > 0 && warn)
     warn(at_vertex(first_unused) + std::to_string(unused) + " vertex(es) used by no face, first " + vname(first_unused));
   return mesh;

@@ -7,4 +7,5 @@ acute_add_layer(mesh
     src/mesh/geometry.cpp
     src/mesh/dual.cpp
     src/mesh/sectors.cpp
+    src/mesh/boundary.cpp
   DEPENDS acute_predicates acute_openmesh)

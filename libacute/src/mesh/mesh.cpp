@@ -44,6 +44,7 @@ Mesh compacted(const Mesh& mesh) {
     for (auto fv : mesh.fv_range(fh)) f.push_back(vmap[fv.idx()]);
     out.add_face(f);
   }
+  order_pinch_vertices(out);
   for (auto eh : mesh.edges()) {
     const auto h = mesh.halfedge_handle(eh, 0);
     const auto a = vmap[mesh.from_vertex_handle(h).idx()], b = vmap[mesh.to_vertex_handle(h).idx()];

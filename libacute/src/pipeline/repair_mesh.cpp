@@ -2,6 +2,7 @@
 
 #include <acute/core/errors.h>
 #include <acute/io/io.h>
+#include <acute/mesh/boundary.h>
 #include <acute/mesh/check.h>
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/quality.h>
@@ -26,22 +27,15 @@ namespace {
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 constexpr double kRightSlack = 1e-6;  ///< --allow-right: max bound 90 + this
 
-/// A boundary loop of the mesh as vertex indices, with the region on its left.
+/// A boundary loop of the mesh as vertex indices, with the region on its left; simple (a pinch
+/// vertex, where the region touches itself, lies on several loops).
 using Loop = std::vector<int>;
 
 std::vector<Loop> boundary_loops(const Mesh& mesh) {
-  std::vector<char> seen(mesh.n_halfedges(), 0);
   std::vector<Loop> loops;
-  for (auto heh : mesh.halfedges()) {
-    if (!mesh.is_boundary(heh) || seen[heh.idx()]) continue;
+  for (const auto& vloop : simple_boundary_loops(mesh)) {  // region on their right
     Loop loop;
-    auto h = heh;
-    do {  // boundary halfedges have the region on their right
-      seen[h.idx()] = 1;
-      loop.push_back(mesh.from_vertex_handle(h).idx());
-      h = mesh.next_halfedge_handle(h);
-    } while (h != heh && !seen[h.idx()]);
-    std::reverse(loop.begin(), loop.end());
+    for (auto it = vloop.rbegin(); it != vloop.rend(); ++it) loop.push_back(it->idx());
     loops.push_back(std::move(loop));
   }
   return loops;
@@ -334,14 +328,21 @@ void check_repairable(const Mesh& mesh) {
   if (loops.size() > 1) {
     std::vector<int> orientation;
     for (const auto& loop : loops) orientation.push_back(loop_orientation(pts, loop));
+    std::vector<int> n_loops(mesh.n_vertices(), 0);  // loops through each vertex
+    for (const auto& loop : loops)
+      for (int v : loop) ++n_loops[v];
     for (std::size_t i = 0; i < loops.size(); ++i) {
-      const Point2& p = pts[loops[i][0]];
+      // Judged at a vertex on this loop only (a loop of pinch vertices alone is left to the
+      // segment checks above).
+      const auto at = std::find_if(loops[i].begin(), loops[i].end(), [&](int v) { return n_loops[v] == 1; });
+      if (at == loops[i].end()) continue;
+      const Point2& p = pts[*at];
       int outside = 0;  // winding number just outside loop i (it lies on no other loop)
       for (std::size_t j = 0; j < loops.size(); ++j)
         if (j != i) outside += winding_number(pts, loops[j], p) != 0 ? orientation[j] : 0;
       const int inside = outside + orientation[i];
       if (outside < 0 || outside > 1 || inside < 0 || inside > 1)
-        throw InvalidInput("boundary loop through vertex " + std::to_string(loops[i][0]) +
+        throw InvalidInput("boundary loop through vertex " + std::to_string(*at) +
                            " is nested inside another loop so that part of the region is covered " +
                            std::to_string(std::max(outside, inside)) + " times (overlapping triangles)");
     }
@@ -363,6 +364,8 @@ Domain repair_domain(const Mesh& mesh, const RepairMeshOptions& o, std::vector<i
   // Which vertices the domain keeps as points.
   std::vector<char> pinned(mesh.n_vertices(), 0);
   for (const auto& f : o.features) pinned[f[0]] = pinned[f[1]] = 1;
+  for (auto vh : mesh.vertices())  // where the region touches itself: a corner of every loop through it
+    if (is_pinch_vertex(mesh, vh)) pinned[vh.idx()] = 1;
   std::vector<char> keep(mesh.n_vertices(), 0);
   for (auto vh : mesh.vertices()) keep[vh.idx()] = o.keep_vertices || (mesh.is_boundary(vh) && !mesh.is_isolated(vh)) || pinned[vh.idx()];
 

@@ -8,6 +8,7 @@
 #include <OpenMesh/Core/Geometry/VectorT.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 
@@ -60,6 +61,12 @@ inline void set_point2(Mesh& mesh, VertexHandle vh, const Point2& p) { mesh.set_
 inline bool is_constrained(const Mesh& mesh, EdgeHandle eh) { return mesh.data(eh).segment >= 0; }
 inline bool is_input(const Mesh& mesh, VertexHandle vh) { return mesh.data(vh).kind == VertexKind::Input; }
 
+/// Relinks the boundary halfedges at every pinch vertex (several fans meeting only there, see
+/// mesh/boundary.h) so that each gap between two fans is closed by the boundary halfedges that
+/// bound it geometrically (exact angular order), as a mesh carved from a triangulation has them;
+/// add_face leaves them in insertion order. Returns the number of pinch vertices.
+std::size_t order_pinch_vertices(Mesh& mesh);
+
 /// Builds a mesh from a user's OpenMesh triangle mesh of any traits (float or double points;
 /// z is dropped). All vertices become Free; boundary edges are not marked as constraints.
 /// Face order and vertex order are kept.
@@ -80,6 +87,7 @@ Mesh from_openmesh(const UserMesh& in) {
     }
     if (k == 3) out.add_face(tri[0], tri[1], tri[2]);
   }
+  order_pinch_vertices(out);
   return out;
 }
 
