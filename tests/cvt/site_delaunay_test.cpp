@@ -21,7 +21,8 @@ void expect_locally_delaunay_triangulation(const detail::SiteDelaunay& dt, const
   ASSERT_EQ(dt.num_sites(), p.size());
   for (std::size_t t = 0; t < tri.size(); ++t) {
     const auto& v = tri[t];
-    for (int i = 0; i < 3; ++i) has[static_cast<std::size_t>(std::min(v[i], n - 1))] |= v[i] < n;
+    for (int i = 0; i < 3; ++i)
+      if (v[i] < n) has[static_cast<std::size_t>(v[i])] = 1;
     if (std::max({v[0], v[1], v[2]}) >= n) continue;  // a frame triangle
     ASSERT_EQ(predicates::orient2d(p[v[0]], p[v[1]], p[v[2]]), Sign::Positive) << "triangle " << t;
     for (int i = 0; i < 3; ++i) {

@@ -82,8 +82,16 @@ namespace {
 /// True when every angle of abc is clearly (by 1e-3 degrees) inside the bounds: squared cosines
 /// against squared thresholds, no square root and no arctangent. False decides nothing.
 bool clearly_within(const std::array<Point2, 3>& p, const AngleBounds& bounds, bool exempt_min) {
-  constexpr double kRad = 3.14159265358979323846 / 180.0;
-  const double c_max = std::cos((bounds.max_deg - 1e-3) * kRad), c_min = std::cos((bounds.min_deg + 1e-3) * kRad);
+  // The cosine thresholds of the last bounds seen (one set per run: not two cosines per triangle).
+  struct Thresholds {
+    double min_deg = -1, max_deg = -1, c_min = 0, c_max = 0;
+  };
+  thread_local Thresholds th;
+  if (th.min_deg != bounds.min_deg || th.max_deg != bounds.max_deg) {
+    constexpr double kRad = 3.14159265358979323846 / 180.0;
+    th = {bounds.min_deg, bounds.max_deg, std::cos((bounds.min_deg + 1e-3) * kRad), std::cos((bounds.max_deg - 1e-3) * kRad)};
+  }
+  const double c_max = th.c_max, c_min = th.c_min;
   if (!(c_max >= 0) || (!exempt_min && !(c_min > 0))) return false;  // unusual bounds: the full test
   for (int i = 0; i < 3; ++i) {
     const Point2 u = p[(i + 1) % 3] - p[i], v = p[(i + 2) % 3] - p[i];
