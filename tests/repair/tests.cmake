@@ -4,6 +4,7 @@ acute_add_test(repair_tests
     repair/joint_relaxation_test.cpp
     repair/local_remesh_test.cpp
     repair/non_obtuse_test.cpp
+    repair/polar_fan_test.cpp
     repair/region_test.cpp
     repair/repair_test.cpp
   LIBS acute_pipeline acute_io)

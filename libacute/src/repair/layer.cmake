@@ -6,6 +6,7 @@ acute_add_layer(repair
     src/repair/joint_relaxation.cpp
     src/repair/local_remesh.cpp
     src/repair/non_obtuse.cpp
+    src/repair/polar_fan.cpp
     src/repair/polygon_centre.cpp
     src/repair/region.cpp
     src/repair/relocation.cpp

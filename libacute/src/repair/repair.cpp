@@ -11,6 +11,7 @@
 #include <acute/repair/relocation.h>
 
 #include "repair/local_remesh.h"
+#include "repair/polar_fan.h"
 #include "repair/region.h"
 
 #include <acute/core/errors.h>
@@ -49,6 +50,7 @@ class Repairer {
       const std::string problem = detail::constraint_violation(mesh_);
       if (!problem.empty()) throw InternalError("repair: input mesh: " + problem);
     }
+    if (params_.grade_sharp_corners) grade_sharp_corners();
     std::size_t best_bad = SIZE_MAX;
     Mesh best;
     int stagnation = 0;
@@ -105,6 +107,50 @@ class Repairer {
   }
 
   void refresh_forced() { forced_ = forced_corner_vertices(mesh_, bounds_.min_deg); }
+
+  /// The disk around each forced corner (a sector narrower than the min bound) rebuilt as a
+  /// log-polar fan (detail::build_polar_fan), written back where its region then has fewer
+  /// infeasible vertices, or as many and a better score.
+  void grade_sharp_corners() {
+    constexpr double kPi = 3.14159265358979323846;
+    bool changed = false;
+    for (const detail::SharpCorner& corner : detail::find_sharp_corners(mesh_, bounds_.min_deg * kPi / 180)) {
+      if (out_of_time()) break;
+      if (mesh_.status(corner.apex).deleted()) continue;
+      if (trace_) std::fprintf(stderr, "sharp corner candidate (%.6g, %.6g) %.2f deg radius %.4g\n", point2(mesh_, corner.apex).x(), point2(mesh_, corner.apex).y(), corner.narrowest * 180 / kPi, corner.radius);
+      // The fan's disk and a margin around it for the smoothing to blend the two.
+      std::vector<VertexHandle> near = detail::vertices_near(mesh_, corner.apex, 1.5 * corner.radius);
+      detail::Region region;
+      if (near.empty() || !detail::extract_region(mesh_, near, forced_, region)) continue;
+      VertexHandle apex;
+      for (auto vh : region.sub.vertices()) {
+        const auto i = static_cast<std::size_t>(vh.idx());
+        if (i < region.to_big.size() && region.to_big[i] == corner.apex) apex = vh;
+      }
+      if (!apex.is_valid()) continue;
+      const Score base = score(region.sub, region.forced);
+      Mesh sub = region.sub;
+      if (!detail::build_polar_fan(sub, apex, corner.radius, detail::kPolarFanRings, forced(corner.apex))) continue;
+      smooth_sub(sub, region.forced, 3);
+      const Score s = score(sub, region.forced);
+      if (trace_) {
+        const Point2 c = point2(mesh_, corner.apex);
+        std::fprintf(stderr, "sharp corner (%.6g, %.6g) %.2f deg radius %.4g: %zu vertices near; infeasible %zu -> %zu, bad %zu -> %zu, worst %.4f -> %.4f\n", c.x(), c.y(),
+                     corner.narrowest * 180 / kPi, corner.radius, near.size(), base.infeasible, s.infeasible, base.bad, s.bad, base.worst, s.worst);
+      }
+      // Fewer infeasible vertices (structural defects no smoothing fixes) outweigh more bad
+      // triangles where the fan meets the old mesh, which the repair then smooths out.
+      const bool better = s < base || s.infeasible < base.infeasible;
+      if (!better) continue;
+      detail::commit_region(mesh_, region, sub);
+      forced_.resize(mesh_.n_vertices(), false);
+      changed = true;
+    }
+    if (changed) {
+      mesh_.garbage_collection();
+      refresh_forced();
+    }
+  }
 
   bool forced(VertexHandle vh) const {
     const auto i = static_cast<std::size_t>(vh.idx());

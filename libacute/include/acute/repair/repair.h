@@ -25,6 +25,9 @@ struct RepairParams {
   /// whole mesh, the local phase only the neighbourhoods of what is left.
   std::size_t global_ratio = 10'000;
   std::size_t max_vertices = 50'000'000;
+  /// Before the first iteration, rebuild the disk around every forced corner (a sector narrower
+  /// than the min bound) as a graded log-polar fan, kept where it leaves fewer infeasible vertices.
+  bool grade_sharp_corners = true;
   double time_limit_s = 0;         ///< 0: none
   std::function<void(const RepairProgress&)> observer;
   std::function<bool()> cancel;    ///< returns true to stop early

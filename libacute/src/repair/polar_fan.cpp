@@ -1,0 +1,210 @@
+#include "repair/polar_fan.h"
+
+#include <acute/mesh/geometry.h>
+#include <acute/mesh/sectors.h>
+#include <acute/ops/delaunay_flips.h>
+#include <acute/ops/insert.h>
+#include <acute/ops/remove.h>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_set>
+
+namespace acute::detail {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Radial growth of the lattice for the narrowest sector theta: the step r (g - 1) equals the side
+/// of the equilateral triangles two rows across the sector (as rebuild_wedge grades its strip).
+double growth(double theta) { return 1.0 + 2.0 * std::sin(0.5 * theta) / std::sqrt(3.0); }
+
+
+double distance_to_edge(const Point2& c, const Point2& a, const Point2& b) {
+  const Point2 d = b - a;
+  const double len2 = d.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((c - a).dot(d) / len2, 0.0, 1.0) : 0.0;
+  return (a + t * d - c).norm();
+}
+
+bool is_wall(const Mesh& mesh, HalfedgeHandle spoke) { return is_constrained(mesh, mesh.edge_handle(spoke)); }
+
+struct FanSector {
+  Point2 u0;         ///< direction of the wall it begins at, counter-clockwise
+  double angle = 0;  ///< radians
+};
+
+/// The sectors at vh between consecutive walls; empty when a fan is partial (a region border) or
+/// vh has fewer than two walls.
+std::vector<FanSector> wall_sectors(const Mesh& mesh, VertexHandle vh) {
+  std::vector<FanSector> out;
+  const WallTest wall = [&](HalfedgeHandle spoke) { return is_wall(mesh, spoke); };
+  int walls = 0;
+  for (auto spoke : mesh.voh_range(vh)) {
+    if (!wall(spoke)) continue;
+    ++walls;
+    if (mesh.is_boundary(spoke)) continue;
+    const SectorSweep sweep = sweep_sector(mesh, spoke, wall, 4096);
+    if (sweep.how != SectorEnd::Wall) return {};
+    out.push_back(FanSector{(point2(mesh, mesh.to_vertex_handle(spoke)) - point2(mesh, vh)).normalized(), sweep.radians});
+  }
+  if (walls < 2) return {};
+  return out;
+}
+
+}  // namespace
+
+std::vector<VertexHandle> vertices_near(const Mesh& mesh, VertexHandle apex, double radius) {
+  const Point2 c = point2(mesh, apex);
+  std::vector<VertexHandle> out, frontier{apex};
+  std::unordered_set<int> seen{apex.idx()};
+  while (!frontier.empty()) {
+    const VertexHandle v = frontier.back();
+    frontier.pop_back();
+    for (auto w : mesh.vv_range(v)) {
+      if (seen.count(w.idx()) || (point2(mesh, w) - c).norm() >= radius) continue;
+      seen.insert(w.idx());
+      if (is_input(mesh, w)) continue;
+      out.push_back(w);
+      frontier.push_back(w);
+    }
+  }
+  return out;
+}
+
+std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector) {
+  std::vector<SharpCorner> out;
+  for (auto apex : mesh.vertices()) {
+    if (mesh.status(apex).deleted() || !is_input(mesh, apex)) continue;
+    const std::vector<FanSector> sectors = wall_sectors(mesh, apex);
+    if (sectors.empty()) continue;
+    double narrowest = INFINITY;
+    for (const FanSector& s : sectors) narrowest = std::min(narrowest, s.angle);
+    if (!(narrowest < max_sector) || narrowest <= 0) continue;
+    const double g = growth(narrowest);
+    const Point2 c = point2(mesh, apex);
+    double radius = INFINITY;
+    std::vector<int> wall_segments;
+    for (auto spoke : mesh.voh_range(apex)) {
+      if (!is_wall(mesh, spoke)) continue;
+      const int segment = mesh.data(mesh.edge_handle(spoke)).segment;
+      wall_segments.push_back(segment);
+      // Walk the wall outwards to its far input vertex. The fan reaches where its radial step
+      // catches up with the wall's own spacing (or half way to the far end).
+      HalfedgeHandle h = spoke;
+      bool spaced = false;
+      for (int guard = 0; guard < 100000; ++guard) {
+        const VertexHandle from = mesh.from_vertex_handle(h), to = mesh.to_vertex_handle(h);
+        const double r_from = (point2(mesh, from) - c).norm(), r_to = (point2(mesh, to) - c).norm();
+        if (!spaced && r_from > 0 && r_from * (g - 1) >= r_to - r_from) {
+          radius = std::min(radius, r_from);
+          spaced = true;
+        }
+        if (is_input(mesh, to)) {
+          radius = std::min(radius, 0.5 * r_to);
+          break;
+        }
+        HalfedgeHandle next;
+        for (auto out_h : mesh.voh_range(to))
+          if (mesh.to_vertex_handle(out_h) != from && mesh.data(mesh.edge_handle(out_h)).segment == segment) next = out_h;
+        if (!next.is_valid()) break;
+        h = next;
+      }
+    }
+    if (!std::isfinite(radius)) continue;
+    // Every other feature stays well outside the disk: segments not at the apex, input vertices.
+    for (bool shrunk = true; shrunk;) {
+      shrunk = false;
+      std::vector<VertexHandle> disk = vertices_near(mesh, apex, radius);
+      disk.push_back(apex);
+      for (auto v : disk)
+        for (auto fh : mesh.vf_range(v))
+          for (auto heh : mesh.fh_range(fh)) {
+            const EdgeHandle eh = mesh.edge_handle(heh);
+            const VertexHandle a = mesh.from_vertex_handle(heh), b = mesh.to_vertex_handle(heh);
+            double d = INFINITY;
+            if (is_input(mesh, a) && a != apex) d = (point2(mesh, a) - c).norm();
+            if ((is_constrained(mesh, eh) || mesh.is_boundary(eh)) && a != apex && b != apex &&
+                std::find(wall_segments.begin(), wall_segments.end(), mesh.data(eh).segment) == wall_segments.end())
+              d = std::min(d, distance_to_edge(c, point2(mesh, a), point2(mesh, b)));
+            if (0.7 * d < radius) radius = 0.7 * d, shrunk = true;
+          }
+    }
+    if (vertices_near(mesh, apex, radius).empty()) continue;
+    out.push_back(SharpCorner{apex, radius, narrowest});
+  }
+  return out;
+}
+
+bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, bool forced) {
+  const std::vector<FanSector> sectors = wall_sectors(sub, apex);
+  if (sectors.empty() || rings < 2) return false;
+  double narrowest = INFINITY;
+  for (const FanSector& s : sectors) narrowest = std::min(narrowest, s.angle);
+  const double g = growth(narrowest);
+  const Point2 c = point2(sub, apex);
+
+  std::vector<VertexHandle> doomed;
+  for (auto vh : sub.vertices())
+    if (!sub.status(vh).deleted() && !is_input(sub, vh) && (point2(sub, vh) - c).norm() < radius) doomed.push_back(vh);
+  if (doomed.empty()) return false;
+  for (int pass = 0; pass < 2; ++pass)
+    for (auto vh : doomed)
+      if (!sub.status(vh).deleted()) remove_vertex(sub, vh);
+  for (auto vh : doomed)
+    if (!sub.status(vh).deleted()) return false;
+
+  // Radii of the even rays (walls included), a[0] < a[1] < ..., and of the odd rays, b[k] between
+  // a[k] and a[k + 1]: a log-polar lattice from a[1] outwards, the outermost a step short of the
+  // radius. The innermost even ring is closer in: the triangle on the chord a[0] a[0]' (the apex
+  // triangle's base) and b[0] is then acute, its base angles half of what the apex triangle leaves.
+  const auto K = static_cast<std::size_t>(rings);
+  std::vector<double> a(K), b(K - 1);
+  a[K - 1] = radius / g;
+  for (std::size_t k = K - 1; k-- > 1;) a[k] = a[k + 1] / g;
+  for (std::size_t k = 0; k + 1 < K; ++k) b[k] = a[k + 1] / std::sqrt(g);
+  a[0] = b[0] / (std::cos(0.5 * narrowest) + std::sin(0.5 * narrowest) * std::tan(0.25 * kPi + 0.25 * narrowest));
+  const std::vector<double>& r = a;
+
+  // Wall points, outermost first: each split shortens the wall's spoke at the apex.
+  std::vector<HalfedgeHandle> walls;
+  for (auto spoke : sub.voh_range(apex))
+    if (is_wall(sub, spoke)) walls.push_back(spoke);
+  std::vector<Point2> directions;
+  for (HalfedgeHandle spoke : walls) directions.push_back((point2(sub, sub.to_vertex_handle(spoke)) - c).normalized());
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    HalfedgeHandle spoke = walls[w];
+    const Point2 u = directions[w];
+    for (std::size_t k = r.size(); k-- > 0;) {
+      if ((point2(sub, sub.to_vertex_handle(spoke)) - c).norm() <= r[k]) continue;
+      const VertexHandle m = split_edge(sub, sub.edge_handle(spoke), c + r[k] * u);
+      if (!m.is_valid()) return false;
+      spoke = sub.find_halfedge(apex, m);
+      if (!spoke.is_valid()) return false;
+    }
+  }
+  // Rays inside each sector: alternately at the radii (even) and at their geometric midpoints (odd).
+  auto insert = [&](const Point2& q) {
+    for (auto fh : sub.vf_range(apex))
+      if (insert_point(sub, q, fh).is_valid()) return true;
+    return false;
+  };
+  for (const FanSector& s : sectors) {
+    const Point2 u0 = s.u0;
+    const double ratio = s.angle / narrowest;
+    const int gaps = std::max(1, static_cast<int>(forced ? std::lround(ratio) : std::floor(ratio + 1e-9)));
+    const double step = 0.5 * s.angle / gaps;
+    const double psi0 = std::atan2(u0.y(), u0.x());
+    for (int j = 1; j < 2 * gaps; ++j) {
+      const Point2 dir(std::cos(psi0 + j * step), std::sin(psi0 + j * step));
+      for (double rho : j % 2 == 0 ? a : b)
+        if (!insert(c + rho * dir)) return false;
+    }
+  }
+  make_delaunay(sub);
+  return true;
+}
+
+
+}  // namespace acute::detail

@@ -1,0 +1,155 @@
+#include <acute/mesh/geometry.h>
+#include <acute/mesher.h>
+#include <acute/repair/angle_bounds.h>
+
+#include "repair/polar_fan.h"
+#include "repair/region.h"
+#include "support/mesh_verify.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace acute {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Point2 polar(double r, double deg) { return Point2(r * std::cos(deg * kPi / 180), r * std::sin(deg * kPi / 180)); }
+
+/// A triangle with a sharp apex at the origin, legs of length 10.
+Domain sharp_triangle(double apex_deg) {
+  Domain d;
+  d.points = {Point2(0, 0), polar(10, 0), polar(10, apex_deg)};
+  d.segments = {{0, 1}, {1, 2}, {2, 0}};
+  return d;
+}
+
+/// A square with a wedge between two interior segments at its centre.
+Domain wedge_between_segments(double apex_deg) {
+  Domain d;
+  d.points = {Point2(-10, -10), Point2(10, -10), Point2(10, 10), Point2(-10, 10), Point2(0, 0), polar(8, 0), polar(8, apex_deg)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {4, 6}};
+  return d;
+}
+
+/// A corner of 50 degrees divided by an interior segment into a sharp sector and a wider one: the
+/// sharp sector has a boundary wall and an interior one (as at the fish's tail in fish-and-rectangle).
+Domain divided_corner(double sharp_deg) {
+  Domain d;
+  d.points = {Point2(0, 0), polar(10, 0), polar(10, sharp_deg), polar(10, 50)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}};
+  return d;
+}
+
+Mesh cvt_start(const Domain& domain, std::size_t vertices) {
+  MeshOptions options;
+  options.method = Method::Cvt;
+  options.target_vertices = vertices;
+  return generate_mesh(domain, options).mesh;
+}
+
+VertexHandle vertex_at(const Mesh& mesh, const Point2& p) {
+  for (auto vh : mesh.vertices())
+    if (!mesh.status(vh).deleted() && point2(mesh, vh) == p) return vh;
+  return VertexHandle();
+}
+
+/// Faces of vh between consecutive constrained spokes: the count of each of its sectors.
+std::vector<int> triangles_per_sector(const Mesh& mesh, VertexHandle vh) {
+  std::vector<int> counts;
+  for (auto spoke : mesh.voh_range(vh)) {
+    if (!is_constrained(mesh, mesh.edge_handle(spoke)) || mesh.is_boundary(spoke)) continue;
+    int n = 0;
+    for (HalfedgeHandle h = spoke;;) {
+      ++n;
+      h = mesh.opposite_halfedge_handle(mesh.prev_halfedge_handle(h));  // next spoke counter-clockwise
+      if (is_constrained(mesh, mesh.edge_handle(h)) || mesh.is_boundary(h)) break;
+    }
+    counts.push_back(n);
+  }
+  return counts;
+}
+
+TEST(FindSharpCorners, only_input_corners_narrower_than_the_bound_with_room_for_a_fan) {
+  const Mesh wedge = cvt_start(sharp_triangle(12), 400);
+  const auto corners = detail::find_sharp_corners(wedge, kPi / 3);
+  ASSERT_EQ(corners.size(), 1u) << "the 12-degree apex; the other two corners are 84 degrees";
+  EXPECT_EQ(point2(wedge, corners[0].apex), Point2(0, 0));
+  EXPECT_NEAR(corners[0].narrowest, 12 * kPi / 180, 1e-9);
+  EXPECT_GT(corners[0].radius, 0);
+  EXPECT_LE(corners[0].radius, 5.0) << "at most half a wall";
+
+  Domain square;
+  square.points = {Point2(0, 0), Point2(4, 0), Point2(4, 4), Point2(0, 4)};
+  square.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  EXPECT_TRUE(detail::find_sharp_corners(cvt_start(square, 200), kPi / 3).empty());
+}
+
+TEST(FindSharpCorners, the_fan_keeps_away_from_other_features) {
+  // An input point 1 from the apex inside the wedge's disk: the fan stops well short of it.
+  Domain d = wedge_between_segments(15);
+  d.points.push_back(polar(1.0, 100));
+  const Mesh mesh = cvt_start(d, 600);
+  for (const auto& corner : detail::find_sharp_corners(mesh, kPi / 3))
+    if (point2(mesh, corner.apex) == Point2(0, 0)) {
+      EXPECT_LE(corner.radius, 0.7 + 1e-12);
+    }
+}
+
+TEST(BuildPolarFan, every_wall_vertex_gets_three_triangles_per_sector_and_the_mesh_stays_valid) {
+  const std::vector<std::pair<const char*, Domain>> cases = {{"sharp triangle 12", sharp_triangle(12)},
+                                                             {"wedge between segments 8", wedge_between_segments(8)},
+                                                             {"wedge between segments 20", wedge_between_segments(20)},
+                                                             {"divided corner 12", divided_corner(12)}};
+  for (const auto& [name, domain] : cases) {
+    SCOPED_TRACE(name);
+    Mesh mesh = cvt_start(domain, 1500);
+    const double area = test::total_area(mesh);
+    const auto corners = detail::find_sharp_corners(mesh, kPi / 3);
+    const detail::SharpCorner* corner = nullptr;
+    for (const auto& c : corners)
+      if (point2(mesh, c.apex) == Point2(0, 0)) corner = &c;
+    ASSERT_NE(corner, nullptr);
+    detail::Region region;
+    ASSERT_TRUE(detail::extract_region(mesh, detail::vertices_near(mesh, corner->apex, 1.5 * corner->radius),
+                                       forced_corner_vertices(mesh, 30), region));
+    Mesh sub = region.sub;
+    const VertexHandle apex = vertex_at(sub, Point2(0, 0));
+    ASSERT_TRUE(apex.is_valid());
+    ASSERT_TRUE(detail::build_polar_fan(sub, apex, corner->radius, detail::kPolarFanRings, true));
+    // Inside the fan (its outer ring meets the old mesh): no vertex on a segment with two triangles on a side (90 + 90 degrees), no
+    // interior vertex with four or fewer (an angle of 90 or more).
+    for (auto vh : sub.vertices()) {
+      if (sub.status(vh).deleted() || vh == apex || (point2(sub, vh)).norm() >= 0.8 * corner->radius) continue;  // the outer ring meets the old mesh
+      if (sub.data(vh).kind == VertexKind::OnSegment) {
+        for (int n : triangles_per_sector(sub, vh)) EXPECT_GE(n, 3) << "at " << point2(sub, vh).transpose();
+      } else {
+        EXPECT_GE(sub.valence(vh), 5u) << "at " << point2(sub, vh).transpose();
+      }
+    }
+    detail::commit_region(mesh, region, sub);
+    mesh.garbage_collection();
+    EXPECT_MESH_VALID(mesh);
+    EXPECT_EQ(detail::constraint_violation(mesh), "");
+    EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
+  }
+}
+
+TEST(RepairAcute, sharp_sectors_beside_interior_segments_meet_the_bounds_with_few_extra_vertices) {
+  for (double sharp_deg : {8.0, 12.5, 20.0}) {
+    for (std::size_t n : {500u, 3000u}) {
+      SCOPED_TRACE(testing::Message() << sharp_deg << " degrees, " << n << " vertices");
+      MeshOptions options;
+      options.target_vertices = n;
+      options.time_limit_s = 60;
+      const MeshResult result = generate_mesh(divided_corner(sharp_deg), options);
+      EXPECT_EQ(result.status, MeshStatus::Ok);
+      EXPECT_MESH_VALID(result.mesh);
+      EXPECT_LE(result.mesh.n_vertices(), result.start_vertices + result.start_vertices / 10);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace acute
