@@ -37,6 +37,18 @@ Mesh build_domain_cdt(const Domain& domain, const CdtOptions& options, CdtStats*
   SegmentTable table;
   table.reserve(domain.segments.size());
   for (const auto& s : domain.segments) table.push_back({domain.points[static_cast<std::size_t>(s[0])], domain.points[static_cast<std::size_t>(s[1])]});
+  // A border edge that is no input segment (a -c hull edge) bounds the domain all the same: it
+  // gets its own segment id after the input segments (as sample_domain gives them for the CVT
+  // start), so that refinement and repair place points on its exact line and slide them only
+  // along it. Left unconstrained, its Steiner points were free vertices at rounded midpoints
+  // which the repair then moved off the hull (issue #9: hull_area_grows, hull_area_tiny_scale).
+  for (auto eh : mesh.edges()) {
+    if (is_constrained(mesh, eh) || !mesh.is_boundary(eh)) continue;
+    const auto h = mesh.halfedge_handle(eh, 0);
+    mesh.data(eh).segment = static_cast<int>(table.size());
+    mesh.data(eh).marker = 0;
+    table.push_back({point2(mesh, mesh.from_vertex_handle(h)), point2(mesh, mesh.to_vertex_handle(h))});
+  }
   set_segment_table(mesh, std::move(table));
   return mesh;
 }
