@@ -104,8 +104,10 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       params.min_angle_deg = options.min_angle_deg;
       params.max_edge = target_edge(options, mesh_area(result.mesh));
       params.max_vertices = options.max_vertices;
+      if (options.time_limit_s > 0) params.time_limit_s = std::max(options.time_limit_s - seconds_since(start), 1e-9);
       const RefineResult r = refine(result.mesh, params);
       if (r.status == RefineStatus::BudgetExhausted) result.notes.push_back("refinement stopped at the vertex budget");
+      if (r.status == RefineStatus::OutOfTime) result.notes.push_back("refinement stopped at the time limit");
       break;
     }
     case Method::Cvt:
@@ -139,7 +141,8 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
           rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
           rp.max_edge = target_edge(options, mesh_area(result.mesh));
           rp.max_vertices = options.max_vertices;
-          refine(result.mesh, rp);
+          if (options.time_limit_s > 0) rp.time_limit_s = std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);
+          if (refine(result.mesh, rp).status == RefineStatus::OutOfTime) result.notes.push_back("the refinement start stopped at its share of the time limit");
         } else {
           result.mesh = std::move(cvt.mesh);
           result.iterations = cvt.iterations;
@@ -151,7 +154,9 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
         rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
         rp.max_edge = target_edge(options, mesh_area(result.mesh));
         rp.max_vertices = options.max_vertices;
-        refine(result.mesh, rp);
+        // As the CVT start: at most half the time limit, the repair has the rest.
+        if (options.time_limit_s > 0) rp.time_limit_s = std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);
+        if (refine(result.mesh, rp).status == RefineStatus::OutOfTime) result.notes.push_back("the refinement start stopped at its share of the time limit");
       }
       if (options.method == Method::Cvt) break;
       result.start_vertices = result.mesh.n_vertices();
