@@ -31,3 +31,21 @@ TEST(Relocate, input_vertex_never_moves_and_segment_vertex_stays_between_neighbo
 }
 
 }  // namespace acute
+
+namespace acute {
+
+// A free vertex on the border (an unconstrained border edge, e.g. a convex hull edge split before
+// the hull edges were segments, issue #9) would drag the domain's boundary along: never moved.
+TEST(Relocate, free_vertex_on_the_border_never_moves) {
+  Mesh mesh = test::grid_mesh(2);
+  for (auto vh : mesh.vertices()) {
+    if (point2(mesh, vh) != Point2(1, 0)) continue;
+    mesh.data(vh).kind = VertexKind::Free;
+    mesh.data(vh).segment = -1;
+    for (auto heh : mesh.voh_range(vh)) mesh.data(mesh.edge_handle(heh)).segment = -1;
+    EXPECT_EQ(can_relocate(mesh, vh, Point2(1.0, -0.1)), OpVerdict::Boundary);  // outward: the area grows
+    EXPECT_EQ(can_relocate(mesh, vh, Point2(1.3, 0)), OpVerdict::Boundary);      // even along the border
+  }
+}
+
+}  // namespace acute

@@ -5,4 +5,5 @@ acute_add_test(pipeline_tests
     pipeline/random_polygons_test.cpp
     pipeline/segment_rounding_test.cpp
     pipeline/resource_bounds_test.cpp
+    pipeline/convex_hull_test.cpp
   LIBS acute_pipeline acute_io nlohmann_json::nlohmann_json)

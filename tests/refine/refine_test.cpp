@@ -239,6 +239,21 @@ TEST(Refine, budget_stops_runaway_refinement) {
   EXPECT_TRUE(check_mesh(mesh, CheckLevel::Delaunay).ok()) << "square";
 }
 
+// A time limit already past stops refinement at its first clock check (every 256 steps), with a
+// valid constrained Delaunay mesh: the CVT-fallback start of the pipeline relies on it.
+TEST(Refine, time_limit_stops_runaway_refinement) {
+  RefineParams params;
+  params.max_edge = 0.001;
+  params.max_vertices = 200000;
+  params.time_limit_s = 1e-9;
+  RefineResult r;
+  const Mesh mesh = refined(square(), params, &r);
+  EXPECT_EQ(r.status, RefineStatus::OutOfTime) << "square";
+  EXPECT_LT(mesh.n_vertices(), 2000u) << "square";
+  EXPECT_EQ(test::verify_valid(mesh), "") << "square";
+  EXPECT_TRUE(check_mesh(mesh, CheckLevel::Delaunay).ok()) << "square";
+}
+
 TEST(Refine, pipeline_method_refine_with_vertex_target) {
   MeshOptions o;
   o.method = Method::Refine;

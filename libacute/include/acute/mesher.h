@@ -72,6 +72,8 @@ struct MeshResult {
 MeshResult generate_mesh(const Domain& domain, const MeshOptions& options = {});
 
 /// The CDT of a domain with the segment table stored in the mesh (build_cdt + set_segment_table).
+/// Border edges on no input segment (the hull edges of a convex_hull domain) become segments too,
+/// numbered domain.segments.size() + k in the table (their ends are input points).
 Mesh build_domain_cdt(const Domain& domain, const CdtOptions& options = {}, CdtStats* stats = nullptr);
 
 /// Area enclosed by the domain's mesh (sum of triangle areas of its CDT).

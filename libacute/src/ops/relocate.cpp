@@ -35,6 +35,9 @@ OpVerdict can_relocate(const Mesh& mesh, VertexHandle vh, const Point2& p) {
       return OpVerdict::OffSegment;
   }
   for (auto heh : mesh.voh_range(vh)) {
+    // A border vertex on no segment (none is expected: border edges are segments) would move the
+    // domain's boundary with it.
+    if (mesh.is_boundary(heh) && data.kind != VertexKind::OnSegment) return OpVerdict::Boundary;
     if (mesh.is_boundary(heh)) continue;
     const Point2 b = point2(mesh, mesh.to_vertex_handle(heh));
     const Point2 c = point2(mesh, mesh.to_vertex_handle(mesh.next_halfedge_handle(heh)));

@@ -37,6 +37,18 @@ Mesh build_domain_cdt(const Domain& domain, const CdtOptions& options, CdtStats*
   SegmentTable table;
   table.reserve(domain.segments.size());
   for (const auto& s : domain.segments) table.push_back({domain.points[static_cast<std::size_t>(s[0])], domain.points[static_cast<std::size_t>(s[1])]});
+  // A border edge that is no input segment (a -c hull edge) bounds the domain all the same: it
+  // gets its own segment id after the input segments (as sample_domain gives them for the CVT
+  // start), so that refinement and repair place points on its exact line and slide them only
+  // along it. Left unconstrained, its Steiner points were free vertices at rounded midpoints
+  // which the repair then moved off the hull (issue #9: hull_area_grows, hull_area_tiny_scale).
+  for (auto eh : mesh.edges()) {
+    if (is_constrained(mesh, eh) || !mesh.is_boundary(eh)) continue;
+    const auto h = mesh.halfedge_handle(eh, 0);
+    mesh.data(eh).segment = static_cast<int>(table.size());
+    mesh.data(eh).marker = 0;
+    table.push_back({point2(mesh, mesh.from_vertex_handle(h)), point2(mesh, mesh.to_vertex_handle(h))});
+  }
   set_segment_table(mesh, std::move(table));
   return mesh;
 }
@@ -92,8 +104,10 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       params.min_angle_deg = options.min_angle_deg;
       params.max_edge = target_edge(options, mesh_area(result.mesh));
       params.max_vertices = options.max_vertices;
+      if (options.time_limit_s > 0) params.time_limit_s = std::max(options.time_limit_s - seconds_since(start), 1e-9);
       const RefineResult r = refine(result.mesh, params);
       if (r.status == RefineStatus::BudgetExhausted) result.notes.push_back("refinement stopped at the vertex budget");
+      if (r.status == RefineStatus::OutOfTime) result.notes.push_back("refinement stopped at the time limit");
       break;
     }
     case Method::Cvt:
@@ -127,7 +141,8 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
           rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
           rp.max_edge = target_edge(options, mesh_area(result.mesh));
           rp.max_vertices = options.max_vertices;
-          refine(result.mesh, rp);
+          if (options.time_limit_s > 0) rp.time_limit_s = std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);
+          if (refine(result.mesh, rp).status == RefineStatus::OutOfTime) result.notes.push_back("the refinement start stopped at its share of the time limit");
         } else {
           result.mesh = std::move(cvt.mesh);
           result.iterations = cvt.iterations;
@@ -139,7 +154,9 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
         rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
         rp.max_edge = target_edge(options, mesh_area(result.mesh));
         rp.max_vertices = options.max_vertices;
-        refine(result.mesh, rp);
+        // As the CVT start: at most half the time limit, the repair has the rest.
+        if (options.time_limit_s > 0) rp.time_limit_s = std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);
+        if (refine(result.mesh, rp).status == RefineStatus::OutOfTime) result.notes.push_back("the refinement start stopped at its share of the time limit");
       }
       if (options.method == Method::Cvt) break;
       result.start_vertices = result.mesh.n_vertices();

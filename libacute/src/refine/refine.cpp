@@ -21,6 +21,7 @@
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -60,7 +61,11 @@ class Refiner {
       : mesh_(mesh), params_(params), cos_min_(std::cos(params.min_angle_deg * kPi / 180.0)),
         max_radius2_(params.max_edge > 0 ? params.max_edge * params.max_edge / 3.0 : 0.0),
         off_constant_(0.475 / std::tan(0.5 * params.min_angle_deg * kPi / 180.0)),
-        n_input_segments_(static_cast<int>(segment_table(mesh).size())) {}
+        n_input_segments_(static_cast<int>(segment_table(mesh).size())),
+        deadline_(params.time_limit_s > 0 ? std::chrono::steady_clock::now() +
+                                                std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                    std::chrono::duration<double>(params.time_limit_s))
+                                          : std::chrono::steady_clock::time_point::max()) {}
 
   RefineResult run() {
     lop_corners();
@@ -74,7 +79,7 @@ class Refiner {
         if (is_constrained(mesh_, eh) && is_encroached(eh)) segments_.push_back(eh);
       if (faces_.empty() && segments_.empty()) break;
       process_queues();
-      if (result_.status == RefineStatus::BudgetExhausted || progress() == before) break;
+      if (result_.status != RefineStatus::Converged || progress() == before) break;
     }
     release_chords();
     result_.corners = corners_.size();
@@ -346,9 +351,13 @@ class Refiner {
   // ---------------------------------------------------------------- refinement
 
   void process_queues() {
-    while (true) {
+    for (std::size_t step = 1;; ++step) {
       if (mesh_.n_vertices() >= params_.max_vertices) {
         result_.status = RefineStatus::BudgetExhausted;
+        break;
+      }
+      if (step % 256 == 0 && deadline_ != std::chrono::steady_clock::time_point::max() && std::chrono::steady_clock::now() > deadline_) {
+        result_.status = RefineStatus::OutOfTime;
         break;
       }
       if (!segments_.empty()) {
@@ -511,6 +520,7 @@ class Refiner {
   RefineParams params_;
   double cos_min_, max_radius2_, off_constant_;
   int n_input_segments_;
+  std::chrono::steady_clock::time_point deadline_;
   std::vector<Corner> corners_;
   std::vector<int> chord_corner_, chord_sector_;  // indexed by chord segment id - n_input_segments_
   std::unordered_map<int, int> corner_of_apex_, corner_of_cut_;

@@ -41,6 +41,11 @@ Patch make_patch(const Mesh& mesh, const std::vector<VertexHandle>& vertices, co
         ends = segment_endpoints(mesh, d.segment);
         axis = (ends[1] - ends[0]).normalized();
       }
+    } else if (movable_only) {
+      // A free vertex on the border would move the domain's boundary (as can_relocate refuses).
+      bool border = false;
+      for (auto heh : mesh.voh_range(vh)) border = border || mesh.is_boundary(heh);
+      if (border) continue;
     }
     index.emplace(vh.idx(), static_cast<int>(patch.movable.size()));
     patch.movable.push_back(vh);

@@ -11,8 +11,9 @@ namespace acute {
 bool keeps_segment_order(const Mesh& mesh, VertexHandle vh, const Point2& p);
 
 /// Ok when vh may move to p: vh is not Input; a vertex on a segment stays on its segment (p is
-/// projected by the caller; checked by keeps_segment_order and close_enough_to_line);
-/// every incident triangle stays strictly counter-clockwise (exact).
+/// projected by the caller; checked by keeps_segment_order and close_enough_to_line); a vertex
+/// on the mesh border that is not on a segment never moves (Boundary); every incident triangle
+/// stays strictly counter-clockwise (exact).
 OpVerdict can_relocate(const Mesh& mesh, VertexHandle vh, const Point2& p);
 
 /// Moves vh to p. \pre can_relocate(mesh, vh, p) == Ok. Does not flip: call restore_delaunay

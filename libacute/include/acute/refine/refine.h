@@ -18,10 +18,11 @@ struct RefineParams {
   double min_angle_deg = 20.7;   ///< triangles with a smaller angle are split (practical limit ~33)
   double max_edge = 0;           ///< > 0: triangles whose circumradius exceeds max_edge/sqrt(3) are split
   std::size_t max_vertices = 50'000'000;  ///< budget: stop (status BudgetExhausted) when reached
+  double time_limit_s = 0;       ///< > 0: stop (status OutOfTime) after about this many seconds
   bool off_centers = true;       ///< Ungor's off-centres instead of circumcentres
 };
 
-enum class RefineStatus { Converged, BudgetExhausted };
+enum class RefineStatus { Converged, BudgetExhausted, OutOfTime };
 
 struct RefineResult {
   RefineStatus status = RefineStatus::Converged;
@@ -33,7 +34,7 @@ struct RefineResult {
 
 /// Refines a constrained Delaunay mesh in place (garbage-collected at the end).
 /// \pre the mesh is constrained Delaunay with its segment table set (build_cdt does both)
-/// \post constrained Delaunay (the chords are released); unless the budget ran out, every
+/// \post constrained Delaunay (the chords are released); unless the budget or time ran out, every
 ///       triangle not incident on a forced corner has all angles >= min_angle_deg (up to ~33 in
 ///       practice) and, with max_edge > 0, circumradius <= max_edge / sqrt(3) (fan triangles too)
 RefineResult refine(Mesh& mesh, const RefineParams& params = {});
