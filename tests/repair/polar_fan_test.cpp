@@ -97,6 +97,22 @@ TEST(FindSharpCorners, the_fan_keeps_away_from_other_features) {
     }
 }
 
+TEST(FindSharpCorners, a_disk_kept_far_below_the_spacing_is_left_out) {
+  // A short segment 0.2 below the apex of a 15-degree wedge: the disk must stay under 0.14, where
+  // the lattice would be far finer than the mesh (spacing about 1) it meets.
+  Domain d = wedge_between_segments(15);
+  d.points.push_back(Point2(-0.3, -0.2));
+  d.points.push_back(Point2(0.3, -0.2));
+  d.segments.push_back({7, 8});
+  const Mesh mesh = cvt_start(d, 600);
+  for (const auto& corner : detail::find_sharp_corners(mesh, kPi / 3)) EXPECT_NE(point2(mesh, corner.apex), Point2(0, 0));
+  // Without the segment the corner is found.
+  const Mesh plain = cvt_start(wedge_between_segments(15), 600);
+  bool found = false;
+  for (const auto& corner : detail::find_sharp_corners(plain, kPi / 3)) found = found || point2(plain, corner.apex) == Point2(0, 0);
+  EXPECT_TRUE(found);
+}
+
 TEST(BuildPolarFan, every_wall_vertex_gets_three_triangles_per_sector_and_the_mesh_stays_valid) {
   const std::vector<std::pair<const char*, Domain>> cases = {{"sharp triangle 12", sharp_triangle(12)},
                                                              {"wedge between segments 8", wedge_between_segments(8)},

@@ -16,6 +16,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+/// The mesh's wall spacing at the fan's radius may be at most this many lattice steps.
+constexpr double kMaxSpacingRatio = 2.5;
+
 /// Radial growth of the lattice for the narrowest sector theta: the step r (g - 1) equals the side
 /// of the equilateral triangles two rows across the sector (as rebuild_wedge grades its strip).
 double growth(double theta) { return 1.0 + 2.0 * std::sin(0.5 * theta) / std::sqrt(3.0); }
@@ -86,6 +89,7 @@ std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector)
     const Point2 c = point2(mesh, apex);
     double radius = INFINITY;
     std::vector<int> wall_segments;
+    std::vector<std::pair<double, double>> wall_edges;  // (r_from, r_to) of every wall edge walked
     for (auto spoke : mesh.voh_range(apex)) {
       if (!is_wall(mesh, spoke)) continue;
       const int segment = mesh.data(mesh.edge_handle(spoke)).segment;
@@ -97,6 +101,7 @@ std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector)
       for (int guard = 0; guard < 100000; ++guard) {
         const VertexHandle from = mesh.from_vertex_handle(h), to = mesh.to_vertex_handle(h);
         const double r_from = (point2(mesh, from) - c).norm(), r_to = (point2(mesh, to) - c).norm();
+        wall_edges.emplace_back(r_from, r_to);
         if (!spaced && r_from > 0 && r_from * (g - 1) >= r_to - r_from) {
           radius = std::min(radius, r_from);
           spaced = true;
@@ -131,6 +136,12 @@ std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector)
             if (0.7 * d < radius) radius = 0.7 * d, shrunk = true;
           }
     }
+    // Where another feature keeps the disk small, the lattice's outer ring is much finer than the
+    // mesh around it, and no smoothing blends the two (la's 4-degree hub: 39 times finer).
+    double spacing = INFINITY;
+    for (const auto& [r_from, r_to] : wall_edges)
+      if (r_from < radius && radius <= r_to) spacing = std::min(spacing, r_to - r_from);
+    if (std::isfinite(spacing) && spacing > kMaxSpacingRatio * radius * (g - 1)) continue;
     if (vertices_near(mesh, apex, radius).empty()) continue;
     out.push_back(SharpCorner{apex, radius, narrowest});
   }
