@@ -16,8 +16,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// The mesh's wall spacing at the fan's radius may be at most this many lattice steps.
-constexpr double kMaxSpacingRatio = 2.5;
+/// The mesh's wall spacing at the fan's radius may be at most this many lattice steps (la's
+/// 4-degree hub, where a nearby segment keeps the disk small: 39; fans that help: up to about 6).
+constexpr double kMaxSpacingRatio = 8;
 
 /// Radial growth of the lattice for the narrowest sector theta: the step r (g - 1) equals the side
 /// of the equilateral triangles two rows across the sector (as rebuild_wedge grades its strip).
@@ -101,7 +102,9 @@ std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector)
       for (int guard = 0; guard < 100000; ++guard) {
         const VertexHandle from = mesh.from_vertex_handle(h), to = mesh.to_vertex_handle(h);
         const double r_from = (point2(mesh, from) - c).norm(), r_to = (point2(mesh, to) - c).norm();
-        wall_edges.emplace_back(r_from, r_to);
+        // (An edge up to an input vertex says nothing of the mesh's spacing: in a given mesh of
+        // `acute repair` every wall edge is one.)
+        if (!is_input(mesh, to)) wall_edges.emplace_back(r_from, r_to);
         if (!spaced && r_from > 0 && r_from * (g - 1) >= r_to - r_from) {
           radius = std::min(radius, r_from);
           spaced = true;

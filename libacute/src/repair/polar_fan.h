@@ -23,7 +23,7 @@ struct SharpCorner {
 /// least a few rings deep, with the radius of that fan: where the lattice's radial step reaches
 /// the wall spacing of the mesh, at most half the distance to the far end of a wall, and 0.7 of the
 /// distance to every other segment or input vertex. A corner whose wall spacing at that radius is
-/// more than 2.5 lattice steps (another feature keeps the disk small) is left out: the fan's outer
+/// more than 8 lattice steps (another feature keeps the disk small) is left out: the fan's outer
 /// ring would be much finer than the mesh it meets.
 std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector);
 
