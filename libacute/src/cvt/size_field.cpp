@@ -363,24 +363,13 @@ SizeField graded_field(const LfsSamples& samples, const DomainMeasures& dm, doub
 
 }  // namespace
 
-LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap, double time_limit_s) {
+LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap) {
   if (!(spacing_cap > 0)) throw InvalidInput("size field: the lfs spacing cap must be positive");
-  const auto start = std::chrono::steady_clock::now();
-  std::size_t calls = 0;
-  auto out_of_time = [&] {
-    return time_limit_s > 0 && (++calls & 255) == 0 &&
-           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > time_limit_s;
-  };
   const FeatureGrid grid(cdt);
   LfsSamples out;
   const std::size_t nv = grid.num_points();
-  std::vector<double> vertex_lfs(nv, std::numeric_limits<double>::infinity());
-  bool stopped = false;
+  std::vector<double> vertex_lfs(nv);
   for (std::size_t i = 0; i < nv; ++i) {
-    if (out_of_time()) {
-      stopped = true;
-      break;
-    }
     Point2 foot;
     vertex_lfs[i] = grid.nearest(grid.point(i), static_cast<int>(i), static_cast<int>(i), &foot);
     out.points.push_back(grid.point(i));
@@ -393,7 +382,6 @@ LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap, doubl
     }
   }
   for (const auto& e : grid.edges()) {
-    if (stopped || out_of_time()) break;
     const Point2 a = grid.point(static_cast<std::size_t>(e[0])), b = grid.point(static_cast<std::size_t>(e[1]));
     const double len = (b - a).norm();
     if (!(len > 0)) continue;
@@ -417,7 +405,7 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
   if (!(dm.diameter > 0)) throw InvalidInput("size field: the domain has no extent");
   const double hmax = params.hmax > 0 ? params.hmax : dm.diameter / 25.0;
   const double hmin = params.hmin > 0 ? std::min(params.hmin, hmax) : std::min(1e-6 * dm.diameter, hmax);
-  return graded_field(local_feature_size_samples(cdt, hmax, params.time_limit_s), dm, params.lfs_factor, hmin, hmax, params.gradation);
+  return graded_field(local_feature_size_samples(cdt, hmax), dm, params.lfs_factor, hmin, hmax, params.gradation);
 }
 
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) {
@@ -437,7 +425,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) 
     };
     const double target = static_cast<double>(params.max_vertices > 0 ? std::min(params.target_vertices, params.max_vertices) : params.target_vertices);
     const double hmin = params.hmin > 0 ? std::min(params.hmin, hn) : std::min(1e-6 * dm.diameter, hn);
-    const LfsSamples samples = local_feature_size_samples(input_cdt, hn, params.time_limit_s);
+    const LfsSamples samples = local_feature_size_samples(input_cdt, hn);
     auto field_at = [&](double hmax) { return graded_field(samples, dm, params.lfs_factor, hmin, hmax, params.gradation); };
     const double top = std::max(hn, dm.diameter);
     SizeField ft = field_at(top);

@@ -99,9 +99,7 @@ struct LfsSamples {
   std::vector<Point2> points;
   std::vector<double> lfs;
 };
-/// time_limit_s > 0: stop sampling after about that many seconds (fewer samples, a coarser field
-/// near the features; nearest-feature queries on millions of clustered input points are slow).
-LfsSamples local_feature_size_samples(const Mesh& input_cdt, double spacing_cap, double time_limit_s = 0);
+LfsSamples local_feature_size_samples(const Mesh& input_cdt, double spacing_cap);
 
 /// The graded field of the input: h = lfs_factor * lfs at the local_feature_size_samples (spacing
 /// cap hmax), plus a coarse grid at hmax; clamped to [hmin, hmax] and gradation-limited along the
