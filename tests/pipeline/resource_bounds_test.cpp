@@ -3,7 +3,11 @@
 // --max-vertices and --time-limit must end the run with a valid, conforming mesh within the budget
 // and a note saying what stopped it. Nothing here is timed: a near-zero time limit only has to
 // give a valid mesh.
+#include <acute/mesh/check.h>
 #include <acute/mesher.h>
+#include <acute/refine/refine.h>
+#include <acute/repair/repair.h>
+#include <acute/repair_mesh.h>
 
 #include "support/domain_verify.h"
 
@@ -63,6 +67,41 @@ TEST(ResourceBounds, exhausted_time_limit_still_gives_a_valid_mesh) {
   EXPECT_TRUE(has_note(r, "time limit"));
   EXPECT_EQ(test::verify_conforms(r.mesh, d, mesh_area(build_domain_cdt(d))), "");
   EXPECT_EQ(test::verify_segment_chains(r.mesh, d), "");
+}
+
+/// A Delaunay refinement (20 degrees) of the toothed square: many triangles outside [30, 90).
+Mesh refined_toothed_square() {
+  Mesh mesh = build_domain_cdt(toothed_square(200));
+  RefineParams rp;
+  rp.min_angle_deg = 20;
+  refine(mesh, rp);
+  return mesh;
+}
+
+TEST(ResourceBounds, repair_stops_at_an_exhausted_time_limit_with_a_valid_mesh) {
+  Mesh mesh = refined_toothed_square();
+  RepairParams params;
+  params.bounds.min_deg = 30;
+  params.bounds.max_deg = 90;
+  ASSERT_FALSE(bad_triangles(mesh, params.bounds).empty());
+  params.time_limit_s = 1e-9;
+  const RepairResult r = repair_acute(mesh, params);
+  EXPECT_EQ(r.status, RepairStatus::TimeLimit);
+  EXPECT_TRUE(check_mesh(mesh, CheckLevel::Geometry).ok());
+}
+
+TEST(ResourceBounds, repair_of_a_mesh_honours_the_time_limit_in_its_start_mesh_too) {
+  // The whole `acute repair` (its CVT start included, not only the repair after it) is bounded:
+  // an exhausted limit stops the start, says so, and still gives a valid mesh of the region.
+  const Mesh in = refined_toothed_square();
+  RepairMeshOptions o;
+  o.time_limit_s = 1e-9;
+  const RepairMeshResult r = repair_mesh(in, o);
+  bool noted = false;
+  for (const auto& n : r.notes) noted = noted || n.find("time limit") != std::string::npos;
+  EXPECT_TRUE(noted);
+  EXPECT_TRUE(check_mesh(r.mesh, CheckLevel::Geometry).ok());
+  EXPECT_NEAR(mesh_area(r.mesh), mesh_area(in), 1e-9);
 }
 
 }  // namespace

@@ -55,7 +55,7 @@ struct RepairMeshOptions {
   unsigned seed = 1;
   int max_iterations = 0;          ///< 0: the repair's default
   std::size_t max_vertices = 50'000'000;
-  double time_limit_s = 0;         ///< repair phase (all starts together with keep_vertices); 0: none
+  double time_limit_s = 0;         ///< the whole repair (start mesh and repair; all starts together with keep_vertices); 0: none
   std::function<void(const RepairMeshProgress&)> progress;
   std::function<bool()> cancel;    ///< polled during the repair; true stops it (best mesh kept)
 };

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <limits>
 
@@ -24,8 +25,12 @@ constexpr int kWindow = 128;
 constexpr int kMaxWindow = 4096;
 constexpr double kAcceptable = 0x1p-36;
 
-OpenMesh::MPropHandleT<SegmentTable> table_handle(const Mesh& mesh) {
-  OpenMesh::MPropHandleT<SegmentTable> mph;
+// Held by shared pointer: a mesh copy (the repair copies regions and candidates many times) shares
+// the table instead of copying every segment. The table is never changed in place.
+using SharedTable = std::shared_ptr<const SegmentTable>;
+
+OpenMesh::MPropHandleT<SharedTable> table_handle(const Mesh& mesh) {
+  OpenMesh::MPropHandleT<SharedTable> mph;
   mesh.get_property_handle(mph, kSegmentTableName);
   return mph;
 }
@@ -120,13 +125,24 @@ bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, con
 void set_segment_table(Mesh& mesh, SegmentTable table) {
   auto mph = table_handle(mesh);
   if (!mph.is_valid()) mesh.add_property(mph, kSegmentTableName);
-  mesh.property(mph) = std::move(table);
+  mesh.property(mph) = std::make_shared<const SegmentTable>(std::move(table));
+}
+
+void share_segment_table(Mesh& to, const Mesh& from) {
+  const auto from_mph = table_handle(from);
+  if (!from_mph.is_valid()) {
+    set_segment_table(to, SegmentTable{});
+    return;
+  }
+  auto mph = table_handle(to);
+  if (!mph.is_valid()) to.add_property(mph, kSegmentTableName);
+  to.property(mph) = from.property(from_mph);
 }
 
 const SegmentTable& segment_table(const Mesh& mesh) {
   static const SegmentTable empty;
   const auto mph = table_handle(mesh);
-  return mph.is_valid() ? mesh.property(mph) : empty;
+  return mph.is_valid() && mesh.property(mph) ? *mesh.property(mph) : empty;
 }
 
 const std::array<Point2, 2>& segment_endpoints(const Mesh& mesh, int id) { return segment_table(mesh).at(static_cast<std::size_t>(id)); }

@@ -242,7 +242,7 @@ RepairMeshResult from_non_obtuse(NonObtuseResult nr, const Domain& domain, const
 }
 
 /// A start mesh for the required-points repair holding every input point; notes and r.start set.
-/// time_limit_s > 0 bounds the CVT optimisation; budget > 0 the vertices of the refinement (near
+/// time_limit_s > 0 bounds the CVT optimisation and the refinement; budget > 0 the vertices of the refinement (near
 /// small input angles it may not end otherwise).
 Mesh required_start(const Domain& domain, RequiredStart start, const RepairMeshOptions& o, RepairMeshResult& r,
                     double time_limit_s = 0, std::size_t budget = 0) {
@@ -257,7 +257,8 @@ Mesh required_start(const Domain& domain, RequiredStart start, const RepairMeshO
     RefineParams rp;
     rp.min_angle_deg = 20;
     rp.max_vertices = budget > 0 ? std::min(budget, o.max_vertices) : o.max_vertices;
-    refine(mesh, rp);
+    rp.time_limit_s = time_limit_s;
+    if (refine(mesh, rp).status == RefineStatus::OutOfTime) r.notes.push_back("the refinement start stopped at its share of the time limit");
     r.start = "refine";
   } else if (start == RequiredStart::Cvt) {
     notify(o, "cvt");
@@ -516,8 +517,14 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
     RepairMeshResult r;
     r.domain = domain;
     r.n_input_vertices = domain.points.size();
-    r.mesh = required_start(domain, starts[k], o, r);
-    // Each start gets an equal share of what is left of the time limit.
+    // Each start gets an equal share of what is left of the time limit, its start mesh (refinement,
+    // CVT) at most half of that share.
+    double start_share = 0;
+    if (o.time_limit_s > 0) {
+      const double used = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      start_share = std::max(0.05, 0.5 * (o.time_limit_s - used) / static_cast<double>(starts.size() - k));
+    }
+    r.mesh = required_start(domain, starts[k], o, r, start_share);
     RepairMeshOptions ok = o;
     if (o.time_limit_s > 0) {
       const double used = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -566,6 +573,10 @@ RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options
   mo.target_vertices = options.target_vertices;
   mo.seed = options.seed;
   mo.max_vertices = options.max_vertices;
+  // The time limit covers the whole repair: the start mesh (the CVT takes at most half of it, see
+  // generate_mesh) and the repair below gets what is left.
+  const auto t0 = std::chrono::steady_clock::now();
+  mo.time_limit_s = options.time_limit_s;
   if (options.progress)
     mo.observer = [&](const MeshProgress& p) { notify(options, p.phase.c_str(), p.iteration, p.bad); };
   MeshResult m = generate_mesh(r.domain, mo);
@@ -578,7 +589,10 @@ RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options
   bool cancelled = false;
   if (options.method == Method::Acute) {
     cancelled = options.cancel && options.cancel();
-    if (!cancelled) cancelled = run_repair(r, bounds, options);
+    RepairMeshOptions ro = options;
+    if (options.time_limit_s > 0)
+      ro.time_limit_s = std::max(1e-9, options.time_limit_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    if (!cancelled) cancelled = run_repair(r, bounds, ro);
   }
   finish(r, bounds, options, options.method == Method::Acute || options.method == Method::Refine, cancelled);
   return r;

@@ -8,15 +8,47 @@
 
 namespace acute::detail {
 
+namespace {
+
+/// Per-thread marks over the elements of a big mesh, put back to T{} on destruction entry by entry
+/// (only those written): a region of a few hundred faces costs no allocation nor clearing of the
+/// size of the mesh (millions of elements, once per cluster).
+template <class T>
+class Scratch {
+ public:
+  Scratch(std::vector<T>& buffer, std::size_t n) : buf_(buffer) {
+    if (buf_.size() < n) buf_.resize(n, T{});
+  }
+  Scratch(const Scratch&) = delete;
+  Scratch& operator=(const Scratch&) = delete;
+  ~Scratch() {
+    for (auto i : touched_) buf_[i] = T{};
+  }
+  const T& operator[](std::size_t i) const { return buf_[i]; }
+  T& at(std::size_t i) {  // for writing
+    touched_.push_back(i);
+    return buf_[i];
+  }
+
+ private:
+  std::vector<T>& buf_;
+  std::vector<std::size_t> touched_;
+};
+
+thread_local std::vector<char> movable_buffer, region_buffer;
+thread_local std::vector<VertexHandle> to_sub_buffer;
+
+}  // namespace
+
 bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const std::vector<bool>& big_forced, Region& region) {
-  std::vector<char> is_movable(big.n_vertices(), 0);
-  for (auto vh : movable) is_movable[static_cast<std::size_t>(vh.idx())] = 1;
-  std::vector<char> in_region(big.n_faces(), 0);
+  Scratch<char> is_movable(movable_buffer, big.n_vertices());
+  for (auto vh : movable) is_movable.at(static_cast<std::size_t>(vh.idx())) = 1;
+  Scratch<char> in_region(region_buffer, big.n_faces());
   std::vector<FaceHandle> faces;
   auto add_faces_of = [&](VertexHandle vh) {
     for (auto fh : big.vf_range(vh))
       if (!in_region[static_cast<std::size_t>(fh.idx())]) {
-        in_region[static_cast<std::size_t>(fh.idx())] = 1;
+        in_region.at(static_cast<std::size_t>(fh.idx())) = 1;
         faces.push_back(fh);
       }
   };
@@ -36,7 +68,7 @@ bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const st
     for (auto fh : faces)
       for (auto vh : big.fv_range(fh))
         if (!is_movable[static_cast<std::size_t>(vh.idx())] && gaps_after_removal(vh) > 1) {
-          is_movable[static_cast<std::size_t>(vh.idx())] = 1;
+          is_movable.at(static_cast<std::size_t>(vh.idx())) = 1;
           absorb.push_back(vh);
         }
     if (absorb.empty()) break;
@@ -52,9 +84,9 @@ bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const st
 
   region = Region{};
   Mesh& sub = region.sub;
-  std::vector<VertexHandle> to_sub(big.n_vertices());
+  Scratch<VertexHandle> to_sub(to_sub_buffer, big.n_vertices());
   auto map_vertex = [&](VertexHandle vh) {
-    auto& slot = to_sub[static_cast<std::size_t>(vh.idx())];
+    VertexHandle slot = to_sub[static_cast<std::size_t>(vh.idx())];
     if (!slot.is_valid()) {
       slot = sub.add_vertex(big.point(vh));
       sub.data(slot) = big.data(vh);
@@ -63,6 +95,7 @@ bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const st
       region.to_big.push_back(frozen ? vh : VertexHandle());
       const auto i = static_cast<std::size_t>(vh.idx());
       region.forced.push_back(i < big_forced.size() && big_forced[i]);
+      to_sub.at(i) = slot;
     }
     return slot;
   };
@@ -81,7 +114,7 @@ bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const st
       // A border of the copy that is not a border of the mesh is shared with faces outside it.
       sub.data(se).frozen = sub.is_boundary(se) && !big.is_boundary(big.edge_handle(heh));
     }
-  set_segment_table(sub, segment_table(big));
+  share_segment_table(sub, big);
   region.big_faces = std::move(faces);
   for (auto vh : movable) region.big_inner.push_back(vh);
   return true;

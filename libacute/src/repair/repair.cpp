@@ -167,7 +167,9 @@ class Repairer {
   void smooth(std::vector<VertexHandle> vertices, int sweeps) {
     for (int s = 0; s < sweeps; ++s) {
       bool moved_any = false;
+      std::size_t k = 0;
       for (auto vh : vertices) {
+        if ((++k & 1023) == 0 && out_of_time()) return;  // a global sweep on a huge mesh outlasts the limit
         if (mesh_.status(vh).deleted()) continue;
         if (relocate_for_angles(mesh_, vh, bounds_, forced_)) {
           ++result_.relocated;
@@ -182,7 +184,9 @@ class Repairer {
   /// The vertices of the given ones and their neighbours (1-ring), deduplicated.
   std::vector<VertexHandle> grow(const std::vector<VertexHandle>& seeds, int rings) {
     std::vector<VertexHandle> out = seeds;
-    std::vector<char> seen(mesh_.n_vertices(), 0);
+    // Marks kept between calls and cleared entry by entry: no allocation of the mesh's size per cluster.
+    std::vector<char>& seen = seen_;
+    if (seen.size() < mesh_.n_vertices()) seen.resize(mesh_.n_vertices(), 0);
     for (auto vh : seeds) seen[static_cast<std::size_t>(vh.idx())] = 1;
     std::size_t begin = 0;
     for (int r = 0; r < rings; ++r) {
@@ -195,6 +199,7 @@ class Repairer {
           }
       begin = end;
     }
+    for (auto vh : out) seen[static_cast<std::size_t>(vh.idx())] = 0;
     return out;
   }
 
@@ -202,8 +207,11 @@ class Repairer {
     if (global) {
       // Global phase: relocate every vertex whose star is near the bounds, over the whole mesh.
       std::vector<VertexHandle> near;
-      for (auto vh : mesh_.vertices())
+      std::size_t k = 0;
+      for (auto vh : mesh_.vertices()) {
+        if ((++k & 4095) == 0 && out_of_time()) return;
         if (!is_input(mesh_, vh) && star_margin(mesh_, vh, bounds_, forced_) < 4.0) near.push_back(vh);
+      }
       smooth(near, 1);
     }
     // Local phase: each cluster's neighbourhood is copied, candidate operations are tried on the
@@ -607,6 +615,7 @@ class Repairer {
   AngleBounds bounds_;
   std::vector<bool> forced_;
   std::vector<EdgeHandle> queue_;
+  std::vector<char> seen_;  // grow()'s marks, all 0 between calls
   int candidate_ = 0;
   int best_candidate_ = 0;
   double paranoid_area_ = 0;

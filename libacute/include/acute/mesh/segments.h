@@ -14,6 +14,9 @@ using SegmentTable = std::vector<std::array<Point2, 2>>;
 /// Stores the endpoints of every input segment (indexed by segment id) in the mesh.
 void set_segment_table(Mesh& mesh, SegmentTable table);
 
+/// Gives `to` the table of `from` without copying it (the two meshes share it).
+void share_segment_table(Mesh& to, const Mesh& from);
+
 /// The stored table (empty when none was set).
 const SegmentTable& segment_table(const Mesh& mesh);
 
