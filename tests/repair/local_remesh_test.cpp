@@ -5,6 +5,7 @@
 #include "repair/local_remesh.h"
 #include "repair/region.h"
 #include "support/mesh_verify.h"
+#include "support/wedge_domains.h"
 
 #include <gtest/gtest.h>
 
@@ -15,28 +16,11 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Point2 polar(double r, double deg) { return Point2(r * std::cos(deg * kPi / 180), r * std::sin(deg * kPi / 180)); }
-
-/// A triangle with a sharp apex at the origin (apex angle in degrees), legs of length 10.
-Domain sharp_wedge(double apex_deg) {
-  Domain d;
-  d.points = {Point2(0, 0), polar(10, 0), polar(10, apex_deg)};
-  d.segments = {{0, 1}, {1, 2}, {2, 0}};
-  return d;
-}
-
-Mesh cvt_mesh(const Domain& domain, std::size_t vertices) {
-  MeshOptions options;
-  options.method = Method::Cvt;
-  options.target_vertices = vertices;
-  return generate_mesh(domain, options).mesh;
-}
-
-VertexHandle vertex_at(const Mesh& mesh, const Point2& p) {
-  for (auto vh : mesh.vertices())
-    if (!mesh.status(vh).deleted() && point2(mesh, vh) == p) return vh;
-  return VertexHandle();
-}
+using test::cvt_mesh;
+using test::polar;
+using test::sharp_wedge;
+using test::vertex_at;
+using test::wedge_between_segments;
 
 /// The region of every vertex closer than r to p.
 detail::Region region_near(const Mesh& mesh, const Point2& p, double r) {
@@ -97,14 +81,6 @@ TEST(RebuildWedge, wide_corner_is_left_alone) {
   const VertexHandle corner = vertex_at(sub, Point2(0, 0));
   ASSERT_TRUE(corner.is_valid());
   EXPECT_FALSE(detail::rebuild_wedge(sub, corner, 3));
-}
-
-/// A square with a wedge between two interior segments at the origin (apex angle in degrees).
-Domain wedge_between_segments(double apex_deg) {
-  Domain d;
-  d.points = {Point2(-10, -10), Point2(10, -10), Point2(10, 10), Point2(-10, 10), Point2(0, 0), polar(8, 0), polar(8, apex_deg)};
-  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {4, 6}};
-  return d;
 }
 
 TEST(RebuildHub, wedge_between_interior_segments_gets_an_isosceles_apex) {

@@ -5,6 +5,7 @@
 #include "repair/polar_fan.h"
 #include "repair/region.h"
 #include "support/mesh_verify.h"
+#include "support/wedge_domains.h"
 
 #include <gtest/gtest.h>
 
@@ -15,23 +16,12 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-Point2 polar(double r, double deg) { return Point2(r * std::cos(deg * kPi / 180), r * std::sin(deg * kPi / 180)); }
+using test::cvt_mesh;
+using test::polar;
+using test::sharp_wedge;
+using test::vertex_at;
+using test::wedge_between_segments;
 
-/// A triangle with a sharp apex at the origin, legs of length 10.
-Domain sharp_triangle(double apex_deg) {
-  Domain d;
-  d.points = {Point2(0, 0), polar(10, 0), polar(10, apex_deg)};
-  d.segments = {{0, 1}, {1, 2}, {2, 0}};
-  return d;
-}
-
-/// A square with a wedge between two interior segments at its centre.
-Domain wedge_between_segments(double apex_deg) {
-  Domain d;
-  d.points = {Point2(-10, -10), Point2(10, -10), Point2(10, 10), Point2(-10, 10), Point2(0, 0), polar(8, 0), polar(8, apex_deg)};
-  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {4, 6}};
-  return d;
-}
 
 /// A corner of 50 degrees divided by an interior segment into a sharp sector and a wider one: the
 /// sharp sector has a boundary wall and an interior one (as at the fish's tail in fish-and-rectangle).
@@ -40,19 +30,6 @@ Domain divided_corner(double sharp_deg) {
   d.points = {Point2(0, 0), polar(10, 0), polar(10, sharp_deg), polar(10, 50)};
   d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}};
   return d;
-}
-
-Mesh cvt_start(const Domain& domain, std::size_t vertices) {
-  MeshOptions options;
-  options.method = Method::Cvt;
-  options.target_vertices = vertices;
-  return generate_mesh(domain, options).mesh;
-}
-
-VertexHandle vertex_at(const Mesh& mesh, const Point2& p) {
-  for (auto vh : mesh.vertices())
-    if (!mesh.status(vh).deleted() && point2(mesh, vh) == p) return vh;
-  return VertexHandle();
 }
 
 /// Faces of vh between consecutive constrained spokes: the count of each of its sectors.
@@ -72,7 +49,7 @@ std::vector<int> triangles_per_sector(const Mesh& mesh, VertexHandle vh) {
 }
 
 TEST(FindSharpCorners, only_input_corners_narrower_than_the_bound_with_room_for_a_fan) {
-  const Mesh wedge = cvt_start(sharp_triangle(12), 400);
+  const Mesh wedge = cvt_mesh(sharp_wedge(12), 400);
   const auto corners = detail::find_sharp_corners(wedge, kPi / 3);
   ASSERT_EQ(corners.size(), 1u) << "the 12-degree apex; the other two corners are 84 degrees";
   EXPECT_EQ(point2(wedge, corners[0].apex), Point2(0, 0));
@@ -83,14 +60,14 @@ TEST(FindSharpCorners, only_input_corners_narrower_than_the_bound_with_room_for_
   Domain square;
   square.points = {Point2(0, 0), Point2(4, 0), Point2(4, 4), Point2(0, 4)};
   square.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  EXPECT_TRUE(detail::find_sharp_corners(cvt_start(square, 200), kPi / 3).empty());
+  EXPECT_TRUE(detail::find_sharp_corners(cvt_mesh(square, 200), kPi / 3).empty());
 }
 
 TEST(FindSharpCorners, the_fan_keeps_away_from_other_features) {
   // An input point 1 from the apex inside the wedge's disk: the fan stops well short of it.
   Domain d = wedge_between_segments(15);
   d.points.push_back(polar(1.0, 100));
-  const Mesh mesh = cvt_start(d, 600);
+  const Mesh mesh = cvt_mesh(d, 600);
   for (const auto& corner : detail::find_sharp_corners(mesh, kPi / 3))
     if (point2(mesh, corner.apex) == Point2(0, 0)) {
       EXPECT_LE(corner.radius, 0.7 + 1e-12);
@@ -104,23 +81,23 @@ TEST(FindSharpCorners, a_disk_kept_far_below_the_spacing_is_left_out) {
   d.points.push_back(Point2(-0.3, -0.2));
   d.points.push_back(Point2(0.3, -0.2));
   d.segments.push_back({7, 8});
-  const Mesh mesh = cvt_start(d, 600);
+  const Mesh mesh = cvt_mesh(d, 600);
   for (const auto& corner : detail::find_sharp_corners(mesh, kPi / 3)) EXPECT_NE(point2(mesh, corner.apex), Point2(0, 0));
   // Without the segment the corner is found.
-  const Mesh plain = cvt_start(wedge_between_segments(15), 600);
+  const Mesh plain = cvt_mesh(wedge_between_segments(15), 600);
   bool found = false;
   for (const auto& corner : detail::find_sharp_corners(plain, kPi / 3)) found = found || point2(plain, corner.apex) == Point2(0, 0);
   EXPECT_TRUE(found);
 }
 
 TEST(BuildPolarFan, every_wall_vertex_gets_three_triangles_per_sector_and_the_mesh_stays_valid) {
-  const std::vector<std::pair<const char*, Domain>> cases = {{"sharp triangle 12", sharp_triangle(12)},
+  const std::vector<std::pair<const char*, Domain>> cases = {{"sharp triangle 12", sharp_wedge(12)},
                                                              {"wedge between segments 8", wedge_between_segments(8)},
                                                              {"wedge between segments 20", wedge_between_segments(20)},
                                                              {"divided corner 12", divided_corner(12)}};
   for (const auto& [name, domain] : cases) {
     SCOPED_TRACE(name);
-    Mesh mesh = cvt_start(domain, 1500);
+    Mesh mesh = cvt_mesh(domain, 1500);
     const double area = test::total_area(mesh);
     const auto corners = detail::find_sharp_corners(mesh, kPi / 3);
     const detail::SharpCorner* corner = nullptr;
