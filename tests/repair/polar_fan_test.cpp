@@ -110,7 +110,7 @@ TEST(BuildPolarFan, every_wall_vertex_gets_three_triangles_per_sector_and_the_me
     Mesh sub = region.sub;
     const VertexHandle apex = vertex_at(sub, Point2(0, 0));
     ASSERT_TRUE(apex.is_valid());
-    ASSERT_TRUE(detail::build_polar_fan(sub, apex, corner->radius, detail::kPolarFanRings, true));
+    ASSERT_TRUE(detail::build_polar_fan(sub, apex, corner->radius, detail::kPolarFanRings));
     // Inside the fan (its outer ring meets the old mesh): no vertex on a segment with two triangles on a side (90 + 90 degrees), no
     // interior vertex with four or fewer (an angle of 90 or more).
     for (auto vh : sub.vertices()) {

@@ -236,7 +236,7 @@ bool rebuild_sectors(Mesh& sub, VertexHandle apex, const std::vector<Sector>& se
     if (radius.size() < 2) return false;
   } else {
     // Geometric radii, the last ring a step short of the reach.
-    const double growth = 1.0 + 2.0 * std::sin(0.5 * narrowest) / std::sqrt(3.0);
+    const double growth = wedge_growth(narrowest);
     radius.resize(static_cast<std::size_t>(rings));
     radius.back() = reach / growth;
     for (int k = rings - 2; k >= 0; --k) radius[static_cast<std::size_t>(k)] = radius[static_cast<std::size_t>(k) + 1] / growth;

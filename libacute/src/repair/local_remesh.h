@@ -6,6 +6,7 @@
 
 #include <acute/mesh/mesh.h>
 
+#include <cmath>
 #include <cstdint>
 
 namespace acute::detail {
@@ -33,6 +34,10 @@ bool rebuild_wedge(Mesh& sub, VertexHandle apex, int rings);
 /// agree on its points. The faces on the far side of a divided interior wall are left to the
 /// repair (slivers there when the wedge is much narrower than the spacing: see clusters.poly).
 bool rebuild_hub(Mesh& sub, VertexHandle apex, int rings);
+
+/// Radial growth of a graded strip in a sector of theta radians: the step r (g - 1) is the side of
+/// the equilateral triangles two rows across it (rebuild_wedge, rebuild_hub, build_polar_fan).
+inline double wedge_growth(double theta) { return 1.0 + 2.0 * std::sin(0.5 * theta) / std::sqrt(3.0); }
 
 /// Whether vh has a sector rebuild_wedge would rebuild (narrower than 60 degrees, wholly in sub).
 bool has_narrow_sector(const Mesh& sub, VertexHandle vh);

@@ -1,5 +1,7 @@
 #include "repair/polar_fan.h"
 
+#include "repair/local_remesh.h"
+
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/sectors.h>
 #include <acute/ops/delaunay_flips.h>
@@ -19,11 +21,6 @@ constexpr double kPi = 3.14159265358979323846;
 /// The mesh's wall spacing at the fan's radius may be at most this many lattice steps (la's
 /// 4-degree hub, where a nearby segment keeps the disk small: 39; fans that help: up to about 6).
 constexpr double kMaxSpacingRatio = 8;
-
-/// Radial growth of the lattice for the narrowest sector theta: the step r (g - 1) equals the side
-/// of the equilateral triangles two rows across the sector (as rebuild_wedge grades its strip).
-double growth(double theta) { return 1.0 + 2.0 * std::sin(0.5 * theta) / std::sqrt(3.0); }
-
 
 double distance_to_edge(const Point2& c, const Point2& a, const Point2& b) {
   const Point2 d = b - a;
@@ -86,7 +83,7 @@ std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector)
     double narrowest = INFINITY;
     for (const FanSector& s : sectors) narrowest = std::min(narrowest, s.angle);
     if (!(narrowest < max_sector) || narrowest <= 0) continue;
-    const double g = growth(narrowest);
+    const double g = wedge_growth(narrowest);
     const Point2 c = point2(mesh, apex);
     double radius = INFINITY;
     std::vector<int> wall_segments;
@@ -151,12 +148,12 @@ std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector)
   return out;
 }
 
-bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, bool forced) {
+bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings) {
   const std::vector<FanSector> sectors = wall_sectors(sub, apex);
   if (sectors.empty() || rings < 2) return false;
   double narrowest = INFINITY;
   for (const FanSector& s : sectors) narrowest = std::min(narrowest, s.angle);
-  const double g = growth(narrowest);
+  const double g = wedge_growth(narrowest);
   const Point2 c = point2(sub, apex);
 
   std::vector<VertexHandle> doomed;
@@ -179,7 +176,6 @@ bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, boo
   for (std::size_t k = K - 1; k-- > 1;) a[k] = a[k + 1] / g;
   for (std::size_t k = 0; k + 1 < K; ++k) b[k] = a[k + 1] / std::sqrt(g);
   a[0] = b[0] / (std::cos(0.5 * narrowest) + std::sin(0.5 * narrowest) * std::tan(0.25 * kPi + 0.25 * narrowest));
-  const std::vector<double>& r = a;
 
   // Wall points, outermost first: each split shortens the wall's spoke at the apex.
   std::vector<HalfedgeHandle> walls;
@@ -190,9 +186,9 @@ bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, boo
   for (std::size_t w = 0; w < walls.size(); ++w) {
     HalfedgeHandle spoke = walls[w];
     const Point2 u = directions[w];
-    for (std::size_t k = r.size(); k-- > 0;) {
-      if ((point2(sub, sub.to_vertex_handle(spoke)) - c).norm() <= r[k]) continue;
-      const VertexHandle m = split_edge(sub, sub.edge_handle(spoke), c + r[k] * u);
+    for (std::size_t k = a.size(); k-- > 0;) {
+      if ((point2(sub, sub.to_vertex_handle(spoke)) - c).norm() <= a[k]) continue;
+      const VertexHandle m = split_edge(sub, sub.edge_handle(spoke), c + a[k] * u);
       if (!m.is_valid()) return false;
       spoke = sub.find_halfedge(apex, m);
       if (!spoke.is_valid()) return false;
@@ -206,8 +202,7 @@ bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, boo
   };
   for (const FanSector& s : sectors) {
     const Point2 u0 = s.u0;
-    const double ratio = s.angle / narrowest;
-    const int gaps = std::max(1, static_cast<int>(forced ? std::lround(ratio) : std::floor(ratio + 1e-9)));
+    const int gaps = std::max(1, static_cast<int>(std::lround(s.angle / narrowest)));
     const double step = 0.5 * s.angle / gaps;
     const double psi0 = std::atan2(u0.y(), u0.x());
     for (int j = 1; j < 2 * gaps; ++j) {
@@ -219,6 +214,5 @@ bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, boo
   make_delaunay(sub);
   return true;
 }
-
 
 }  // namespace acute::detail

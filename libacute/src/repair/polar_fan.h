@@ -31,16 +31,16 @@ std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector)
 /// within the radius).
 std::vector<VertexHandle> vertices_near(const Mesh& mesh, VertexHandle apex, double radius);
 
-/// Rebuilds the disk of `radius` around `apex` (an Input vertex of sub whose whole star sub holds)
-/// as a log-polar lattice of `rings` rings. `forced`: the apex's sectors may have angles below the
-/// min bound, so sectors are divided to the nearest multiple of the narrowest (else never finer
-/// than the narrowest, so apex angles stay at least that). False when sub was left unchanged or
-/// the rebuild could not be completed (sub is then to be discarded).
 /// Rings of a fan. More reach closer to the apex but add vertices for nothing: the apex triangles
 /// may be as long as they like (their small angles are forced), and three is the fewest that keeps
 /// a whole lattice ring between the apex triangles' chords and the old mesh.
 constexpr int kPolarFanRings = 3;
 
-bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, bool forced);
+/// Rebuilds the disk of `radius` around `apex` (an Input vertex of sub whose whole star sub holds,
+/// with a sector narrower than the min bound, so the apex triangles' small angles are forced) as a
+/// log-polar lattice of `rings` rings; each sector is divided into the nearest multiple of the
+/// narrowest. False when sub was left unchanged or the rebuild could not be completed (sub is then
+/// to be discarded).
+bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings);
 
 }  // namespace acute::detail

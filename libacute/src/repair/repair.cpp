@@ -110,14 +110,13 @@ class Repairer {
 
   /// The disk around each forced corner (a sector narrower than the min bound) rebuilt as a
   /// log-polar fan (detail::build_polar_fan), written back where its region then has fewer
-  /// infeasible vertices, or as many and a better score.
+  /// infeasible vertices or a better score.
   void grade_sharp_corners() {
     constexpr double kPi = 3.14159265358979323846;
     bool changed = false;
     for (const detail::SharpCorner& corner : detail::find_sharp_corners(mesh_, bounds_.min_deg * kPi / 180)) {
       if (out_of_time()) break;
       if (mesh_.status(corner.apex).deleted()) continue;
-      if (trace_) std::fprintf(stderr, "sharp corner candidate (%.6g, %.6g) %.2f deg radius %.4g\n", point2(mesh_, corner.apex).x(), point2(mesh_, corner.apex).y(), corner.narrowest * 180 / kPi, corner.radius);
       // The fan's disk and a margin around it for the smoothing to blend the two.
       std::vector<VertexHandle> near = detail::vertices_near(mesh_, corner.apex, 1.5 * corner.radius);
       detail::Region region;
@@ -130,7 +129,7 @@ class Repairer {
       if (!apex.is_valid()) continue;
       const Score base = score(region.sub, region.forced);
       Mesh sub = region.sub;
-      if (!detail::build_polar_fan(sub, apex, corner.radius, detail::kPolarFanRings, forced(corner.apex))) continue;
+      if (!detail::build_polar_fan(sub, apex, corner.radius, detail::kPolarFanRings)) continue;
       smooth_sub(sub, region.forced, 3);
       const Score s = score(sub, region.forced);
       if (trace_) {
