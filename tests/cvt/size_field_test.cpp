@@ -64,5 +64,32 @@ TEST(SizeField, graded_field_is_small_near_close_features) {
   EXPECT_LE(f({2.4, 0.0}), 0.5 + 1e-12) << d.name << ": the foot of that feature on the segment";
 }
 
+/// The unit square with an isolated interior segment of the given length far from the boundary,
+/// shorter than any spacing a vertex count would give.
+Domain square_with_short_segment(double length) {
+  Domain d = test::unit_square();
+  d.name = "square_with_short_segment";
+  d.points.insert(d.points.end(), {{0.44382, 0.08974}, {0.44382 + 0.6 * length, 0.08974 - 0.8 * length}});
+  d.segments.push_back({4, 5});
+  return d;
+}
+
+TEST(SizeField, a_segment_shorter_than_the_spacing_is_resolved) {
+  // The corner (0, 0) has its nearest feature at the segment's endpoint: a sample there with
+  // the corner's distance (0.45) stood beside the endpoint's own (the segment length), and the
+  // field kept the large one, so the segment vanished from it.
+  for (double length : {1e-3, 1e-6}) {
+    const Mesh cdt = build_cdt(square_with_short_segment(length));
+    SizeFieldParams p;
+    p.target_vertices = 300;
+    p.graded = true;
+    p.lfs_factor = 0.7;
+    const SizeField f = make_size_field(cdt, p);
+    EXPECT_LE(f({0.44382, 0.08974}), 0.7 * length * (1 + 1e-9)) << length;
+    EXPECT_LE(f.min_value(), 0.7 * length * (1 + 1e-9)) << length;
+    EXPECT_GT(f({0.9, 0.9}), 0.03) << length << ": far away the field keeps the spacing of the vertex count";
+  }
+}
+
 }  // namespace
 }  // namespace acute

@@ -19,6 +19,15 @@ Domain polygon(std::vector<Point2> pts) {
   return d;
 }
 
+/// d with an interior segment from p to p + v (the domain continues on both sides of it).
+Domain with_segment(Domain d, const Point2& p, const Point2& v) {
+  const int n = static_cast<int>(d.points.size());
+  d.points.push_back(p);
+  d.points.push_back(p + v);
+  d.segments.push_back({n, n + 1});
+  return d;
+}
+
 /// Every input point is still a vertex, exactly.
 void expect_input_points_kept(const Mesh& mesh, const Domain& domain) {
   std::set<std::pair<double, double>> vertices;
@@ -39,6 +48,7 @@ void expect_acute(const Mesh& mesh, const char* name) {
 struct Case {
   const char* name;
   Domain domain;
+  int corners = 4;  ///< points of the outer polygon (the first ones)
 };
 
 class AcutePipeline : public ::testing::TestWithParam<int> {};
@@ -46,9 +56,11 @@ class AcutePipeline : public ::testing::TestWithParam<int> {};
 std::vector<Case> cases() {
   return {
       {"unit_square", polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}})},
-      {"l_shape", polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}})},
-      {"hexagon", polygon({{2, 0}, {1, 1.7320508075688772}, {-1, 1.7320508075688772}, {-2, 0}, {-1, -1.7320508075688772}, {1, -1.7320508075688772}})},
+      {"l_shape", polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}), 6},
+      {"hexagon", polygon({{2, 0}, {1, 1.7320508075688772}, {-1, 1.7320508075688772}, {-2, 0}, {-1, -1.7320508075688772}, {1, -1.7320508075688772}}), 6},
       {"trapezoid_with_45_degree_corners", polygon({{0, 0}, {6, 0}, {4, 2}, {2, 2}})},
+      {"square_with_isolated_segment_1e-3", with_segment(polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), {0.44382, 0.08974}, {0.6e-3, -0.8e-3})},
+      {"square_with_isolated_segment_1e-6", with_segment(polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), {0.44382, 0.08974}, {0.6e-6, -0.8e-6})},
   };
 }
 
@@ -68,17 +80,19 @@ TEST_P(AcutePipeline, meets_30_90_keeps_input_and_constraints) {
   }
   double area = 0;
   for (auto fh : result.mesh.faces()) (void)fh, area = test::total_area(result.mesh);
+  // The outer polygon's area (its segments are the first ones, in order; interior segments add none).
   double expected = 0;
   const auto& pts = c.domain.points;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const Point2& a = pts[i];
-    const Point2& b = pts[(i + 1) % pts.size()];
+  for (const auto& seg : c.domain.segments) {
+    if (seg[0] >= c.corners) continue;
+    const Point2& a = pts[static_cast<std::size_t>(seg[0])];
+    const Point2& b = pts[static_cast<std::size_t>(seg[1])];
     expected += 0.5 * (a.x() * b.y() - a.y() * b.x());
   }
   EXPECT_NEAR(area, expected, 1e-12 * expected) << c.name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Domains, AcutePipeline, ::testing::Range(0, 4));
+INSTANTIATE_TEST_SUITE_P(Domains, AcutePipeline, ::testing::Range(0, 6));
 
 TEST(Repair, deterministic_for_a_seed) {
   const Domain d = polygon({{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 2}, {0, 2}});

@@ -321,6 +321,30 @@ SizeField graded_field(const LfsSamples& samples, const DomainMeasures& dm, doub
     points.push_back(samples.points[i]);
     values.push_back(std::clamp(lfs_factor * samples.lfs[i], hmin, hmax));
   }
+  // Samples at one point (a vertex's foot on another input vertex, with that vertex's own sample)
+  // keep the smallest value: the triangulation keeps only one of them, which could be the large
+  // one, and a feature shorter than the spacing would then vanish from the field.
+  {
+    std::vector<std::size_t> order(points.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    auto less = [&](std::size_t i, std::size_t j) {
+      return points[i].x() < points[j].x() || (points[i].x() == points[j].x() && points[i].y() < points[j].y());
+    };
+    std::sort(order.begin(), order.end(), less);
+    std::vector<Point2> unique_points;
+    std::vector<double> unique_values;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const std::size_t i = order[k];
+      if (!unique_points.empty() && unique_points.back() == points[i]) {
+        unique_values.back() = std::min(unique_values.back(), values[i]);
+        continue;
+      }
+      unique_points.push_back(points[i]);
+      unique_values.push_back(values[i]);
+    }
+    points = std::move(unique_points);
+    values = std::move(unique_values);
+  }
   // A coarse grid at hmax lets the size grow away from the features.
   {
     double xmin = inf, ymin = inf, xmax = -inf, ymax = -inf;
@@ -404,7 +428,7 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
   const DomainMeasures dm = measure_domain(cdt);
   if (!(dm.diameter > 0)) throw InvalidInput("size field: the domain has no extent");
   const double hmax = params.hmax > 0 ? params.hmax : dm.diameter / 25.0;
-  const double hmin = params.hmin > 0 ? std::min(params.hmin, hmax) : std::min(1e-6 * dm.diameter, hmax);
+  const double hmin = params.hmin > 0 ? std::min(params.hmin, hmax) : std::min(kMinSizeRatio * dm.diameter, hmax);
   return graded_field(local_feature_size_samples(cdt, hmax), dm, params.lfs_factor, hmin, hmax, params.gradation);
 }
 
@@ -424,7 +448,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) 
       return params.time_limit_s > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > params.time_limit_s;
     };
     const double target = static_cast<double>(params.max_vertices > 0 ? std::min(params.target_vertices, params.max_vertices) : params.target_vertices);
-    const double hmin = params.hmin > 0 ? std::min(params.hmin, hn) : std::min(1e-6 * dm.diameter, hn);
+    const double hmin = params.hmin > 0 ? std::min(params.hmin, hn) : std::min(kMinSizeRatio * dm.diameter, hn);
     const LfsSamples samples = local_feature_size_samples(input_cdt, hn);
     auto field_at = [&](double hmax) { return graded_field(samples, dm, params.lfs_factor, hmin, hmax, params.gradation); };
     const double top = std::max(hn, dm.diameter);

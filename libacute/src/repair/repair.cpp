@@ -576,10 +576,27 @@ class Repairer {
       });
     for (auto vh : v)
       attempt([&, vh](Mesh& sub) { return !is_input(sub, vh) && remove_vertex(sub, vh); });
-    // Interior vertices of degree <= 4 always make an angle of at least 90 degrees.
-    for (auto vh : sub0.vertices())
-      if (!is_input(sub0, vh) && !sub0.is_boundary(vh) && sub0.valence(vh) <= 4)
-        attempt([&, vh](Mesh& sub) { return remove_vertex(sub, vh); });
+    // Interior vertices of degree <= 4 always make an angle of at least 90 degrees. Each one next
+    // to the worst face is a candidate of its own; the rest of the region's go together (one
+    // candidate per vertex made a poor region's search cost most of the repair's time).
+    std::vector<VertexHandle> low_near, low_far;
+    for (auto vh : sub0.vertices()) {
+      if (is_input(sub0, vh) || sub0.is_boundary(vh) || sub0.valence(vh) > 4) continue;
+      bool near = false;
+      for (auto w : v) {
+        near = near || w == vh;
+        for (auto x : sub0.vv_range(w)) near = near || x == vh;
+      }
+      (near ? low_near : low_far).push_back(vh);
+    }
+    for (auto vh : low_near) attempt([&, vh](Mesh& sub) { return remove_vertex(sub, vh); });
+    if (!low_far.empty())
+      attempt([&](Mesh& sub) {
+        bool removed = false;
+        for (auto vh : low_far)
+          if (!sub.status(vh).deleted() && sub.valence(vh) <= 4) removed = remove_vertex(sub, vh) || removed;
+        return removed;
+      });
 
     // A sharp corner of the worst face rebuilt as a graded two-row strip (see rebuild_wedge).
     joint_first = true;

@@ -55,13 +55,18 @@ class SizeField {
   std::vector<double> values_;
 };
 
+/// The graded field's smallest size, relative to the domain's diameter: features down to this scale
+/// are resolved (a coordinate still has some 10^7 representable values per such spacing), and the
+/// vertex-count caps keep their cost bounded.
+constexpr double kMinSizeRatio = 1e-9;
+
 struct SizeFieldParams {
   double size = 0;                ///< > 0: uniform field of this edge length
   std::size_t target_vertices = 0;  ///< > 0 (and size == 0): field giving about this many vertices
   bool graded = false;            ///< with target_vertices: the graded field scaled to the count (else uniform)
   double gradation = 1.3;         ///< graded field: |grad h| <= gradation - 1
   double lfs_factor = 1.0;        ///< graded field: h = lfs_factor * local feature size at input points
-  double hmin = 0;                ///< graded field clamp; 0: 1e-6 * diameter
+  double hmin = 0;                ///< graded field clamp; 0: kMinSizeRatio * diameter
   double hmax = 0;                ///< graded field clamp; 0: diameter / 25
   /// > 0: with target_vertices, the field predicts at most this many vertices (coarsening the
   /// feature-bound sizes when the features alone would need more)
