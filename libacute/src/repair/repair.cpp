@@ -576,25 +576,25 @@ class Repairer {
       });
     for (auto vh : v)
       attempt([&, vh](Mesh& sub) { return !is_input(sub, vh) && remove_vertex(sub, vh); });
-    // Interior vertices of degree <= 4 always make an angle of at least 90 degrees. Each one next
-    // to the worst face is a candidate of its own; the rest of the region's go together (one
+    // Interior vertices of degree <= 4 always make an angle of at least 90 degrees. The ones
+    // nearest the worst face are candidates of their own; any further ones go together (one
     // candidate per vertex made a poor region's search cost most of the repair's time).
-    std::vector<VertexHandle> low_near, low_far;
-    for (auto vh : sub0.vertices()) {
-      if (is_input(sub0, vh) || sub0.is_boundary(vh) || sub0.valence(vh) > 4) continue;
-      bool near = false;
-      for (auto w : v) {
-        near = near || w == vh;
-        for (auto x : sub0.vv_range(w)) near = near || x == vh;
-      }
-      (near ? low_near : low_far).push_back(vh);
-    }
-    for (auto vh : low_near) attempt([&, vh](Mesh& sub) { return remove_vertex(sub, vh); });
-    if (!low_far.empty())
+    constexpr std::size_t kLowDegreeSingles = 8;
+    std::vector<std::pair<double, VertexHandle>> low_degree;
+    const Point2 worst_centre = (p[0] + p[1] + p[2]) / 3.0;
+    for (auto vh : sub0.vertices())
+      if (!is_input(sub0, vh) && !sub0.is_boundary(vh) && sub0.valence(vh) <= 4)
+        low_degree.emplace_back((point2(sub0, vh) - worst_centre).squaredNorm(), vh);
+    std::sort(low_degree.begin(), low_degree.end());
+    for (std::size_t k = 0; k < std::min(low_degree.size(), kLowDegreeSingles); ++k)
+      attempt([&, vh = low_degree[k].second](Mesh& sub) { return remove_vertex(sub, vh); });
+    if (low_degree.size() > kLowDegreeSingles)
       attempt([&](Mesh& sub) {
         bool removed = false;
-        for (auto vh : low_far)
+        for (std::size_t k = kLowDegreeSingles; k < low_degree.size(); ++k) {
+          const VertexHandle vh = low_degree[k].second;
           if (!sub.status(vh).deleted() && sub.valence(vh) <= 4) removed = remove_vertex(sub, vh) || removed;
+        }
         return removed;
       });
 
