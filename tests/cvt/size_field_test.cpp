@@ -84,6 +84,9 @@ TEST(SizeField, a_segment_shorter_than_the_spacing_is_resolved) {
     p.target_vertices = 300;
     p.graded = true;
     p.lfs_factor = 0.7;
+    const LfsSamples samples = local_feature_size_samples(cdt, 0.06);
+    for (std::size_t i = 0; i < samples.points.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j) EXPECT_NE(samples.points[i], samples.points[j]) << "samples " << j << " and " << i << " share a point";
     const SizeField f = make_size_field(cdt, p);
     EXPECT_LE(f({0.44382, 0.08974}), 0.7 * length * (1 + 1e-9)) << length;
     EXPECT_LE(f.min_value(), 0.7 * length * (1 + 1e-9)) << length;

@@ -6,6 +6,7 @@
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -321,30 +322,6 @@ SizeField graded_field(const LfsSamples& samples, const DomainMeasures& dm, doub
     points.push_back(samples.points[i]);
     values.push_back(std::clamp(lfs_factor * samples.lfs[i], hmin, hmax));
   }
-  // Samples at one point (a vertex's foot on another input vertex, with that vertex's own sample)
-  // keep the smallest value: the triangulation keeps only one of them, which could be the large
-  // one, and a feature shorter than the spacing would then vanish from the field.
-  {
-    std::vector<std::size_t> order(points.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    auto less = [&](std::size_t i, std::size_t j) {
-      return points[i].x() < points[j].x() || (points[i].x() == points[j].x() && points[i].y() < points[j].y());
-    };
-    std::sort(order.begin(), order.end(), less);
-    std::vector<Point2> unique_points;
-    std::vector<double> unique_values;
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      const std::size_t i = order[k];
-      if (!unique_points.empty() && unique_points.back() == points[i]) {
-        unique_values.back() = std::min(unique_values.back(), values[i]);
-        continue;
-      }
-      unique_points.push_back(points[i]);
-      unique_values.push_back(values[i]);
-    }
-    points = std::move(unique_points);
-    values = std::move(unique_values);
-  }
   // A coarse grid at hmax lets the size grow away from the features.
   {
     double xmin = inf, ymin = inf, xmax = -inf, ymax = -inf;
@@ -421,6 +398,17 @@ LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap) {
       t += step(d);
     }
   }
+  // Samples at one point (a vertex's foot on another input vertex, beside that vertex's own
+  // sample) keep the smallest value: the field's triangulation keeps one of them, and were it the
+  // large one, a feature shorter than the spacing would vanish from the field.
+  std::vector<std::pair<std::array<double, 2>, double>> merged;
+  merged.reserve(out.points.size());
+  for (std::size_t i = 0; i < out.points.size(); ++i) merged.push_back({{out.points[i].x(), out.points[i].y()}, out.lfs[i]});
+  std::sort(merged.begin(), merged.end());  // by point, then by lfs: the first of a point is its smallest
+  merged.erase(std::unique(merged.begin(), merged.end(), [](const auto& x, const auto& y) { return x.first == y.first; }), merged.end());
+  out.points.clear();
+  out.lfs.clear();
+  for (const auto& [xy, lfs] : merged) out.points.emplace_back(xy[0], xy[1]), out.lfs.push_back(lfs);
   return out;
 }
 

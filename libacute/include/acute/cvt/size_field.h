@@ -99,7 +99,8 @@ double predicted_vertex_count(const Mesh& mesh, const SizeField& field);
 /// about min(lfs, spacing_cap) (at least length / 16): the distance to the
 /// nearest feature sharing no endpoint with ab (so two walls of a narrow channel see each other
 /// all along, not only at their endpoints). Exact nearest-feature search over a bucket grid:
-/// features across the whole domain count, not only CDT neighbours.
+/// features across the whole domain count, not only CDT neighbours. Every point appears once,
+/// with the smallest value any sample had there.
 struct LfsSamples {
   std::vector<Point2> points;
   std::vector<double> lfs;
