@@ -64,6 +64,24 @@ TEST(SizeField, graded_field_is_small_near_close_features) {
   EXPECT_LE(f({2.4, 0.0}), 0.5 + 1e-12) << d.name << ": the foot of that feature on the segment";
 }
 
+TEST(SizeField, two_tiny_features_far_apart_do_not_keep_the_field_small_between_them) {
+  // Two isolated segments 1e-7 long, closer than the background grid's step (stress seed 35): the
+  // background triangulation joined their samples by an edge, and the field, linear along it,
+  // stayed 1e-7 all the way (933,000 predicted vertices instead of about 2,000 there). Between
+  // them it must grow as the gradation allows.
+  Domain d = test::unit_square();
+  const Point2 a{0.52, 0.52}, b{0.535, 0.535};
+  d.points.insert(d.points.end(), {a, a + Point2(0, 1e-7), b, b + Point2(0, 1e-7)});
+  d.segments.push_back({4, 5});
+  d.segments.push_back({6, 7});
+  const Mesh cdt = build_cdt(d);
+  const SizeField f = local_feature_size_field(cdt, {});
+  const double half = 0.5 * (b - a).norm();
+  EXPECT_LE(f(a), 1e-7 * (1 + 1e-9));
+  EXPECT_GT(f(0.5 * (a + b)), 0.5 * 0.3 * half) << "halfway, " << half << " from either feature";
+  EXPECT_LT(predicted_vertex_count(cdt, f), 20000);
+}
+
 /// The unit square with an isolated interior segment of the given length far from the boundary,
 /// shorter than any spacing a vertex count would give.
 Domain square_with_short_segment(double length) {

@@ -134,6 +134,23 @@ TEST(RemeshRegion, resampled_region_stays_valid_and_conforming) {
   }
 }
 
+TEST(RemeshRegion, spacing_far_below_the_region_is_refused_and_leaves_it_unchanged) {
+  // The median edge of a cluster around a feature 1e-6 of its size: re-sampling the whole region
+  // at that spacing meant millions of darts, each checked against every point (stress seed 158:
+  // one repair iteration of 55 s under a 5 s time limit).
+  Domain d;
+  d.points = {Point2(0, 0), Point2(4, 0), Point2(4, 4), Point2(0, 4)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  Mesh mesh = cvt_mesh(d, 400);
+  detail::Region region = region_near(mesh, Point2(2, 2), 1.2);
+  Mesh sub = region.sub;
+  const double h = detail::movable_edge_median(sub);
+  ASSERT_GT(h, 0);
+  EXPECT_FALSE(detail::remesh_region(sub, 1e-3 * h, 7));
+  EXPECT_EQ(sub.n_vertices(), region.sub.n_vertices());
+  EXPECT_TRUE(detail::remesh_region(sub, h, 7)) << "at its own spacing the region is re-sampled";
+}
+
 TEST(RepairAcute, sharp_wedges_meet_the_bounds) {
   for (double apex_deg : {8.0, 15.0, 25.0}) {
     SCOPED_TRACE(apex_deg);

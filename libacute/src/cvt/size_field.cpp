@@ -336,28 +336,50 @@ SizeField graded_field(const LfsSamples& samples, const DomainMeasures& dm, doub
         values.push_back(hmax);
       }
   }
-  auto triangles = delaunay_triangles(points);
   // Gradation: h_w <= h_v + slope |vw| along the Delaunay edges (Dijkstra from the smallest sizes).
-  std::vector<std::vector<int>> adj(points.size());
-  for (const auto& t : triangles)
-    for (int i = 0; i < 3; ++i) adj[static_cast<std::size_t>(t[static_cast<std::size_t>(i)])].push_back(t[static_cast<std::size_t>((i + 1) % 3)]),
-          adj[static_cast<std::size_t>(t[static_cast<std::size_t>((i + 1) % 3)])].push_back(t[static_cast<std::size_t>(i)]);
+  // The field is linear in between, so a long edge whose two ends are both small (two tiny features
+  // far apart) would keep it small all along: such an edge gets its midpoint as a new point, graded
+  // like the others, until every edge's interpolant is within a factor 2 of the graded bound (a few
+  // rounds per factor 2 of length: logarithmic in the feature sizes).
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<std::vector<int>> adj;
   using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  for (std::size_t i = 0; i < points.size(); ++i) queue.emplace(values[i], static_cast<int>(i));
-  std::vector<char> done(points.size(), 0);
-  while (!queue.empty()) {
-    const auto [h, v] = queue.top();
-    queue.pop();
-    if (done[static_cast<std::size_t>(v)] || h > values[static_cast<std::size_t>(v)]) continue;
-    done[static_cast<std::size_t>(v)] = 1;
-    for (int w : adj[static_cast<std::size_t>(v)]) {
-      const double hw = h + slope * (points[static_cast<std::size_t>(w)] - points[static_cast<std::size_t>(v)]).norm();
-      if (hw < values[static_cast<std::size_t>(w)]) {
-        values[static_cast<std::size_t>(w)] = hw;
-        queue.emplace(hw, w);
+  for (int round = 0; round < 64; ++round) {
+    triangles = delaunay_triangles(points);
+    adj.assign(points.size(), {});
+    for (const auto& t : triangles)
+      for (int i = 0; i < 3; ++i) {
+        const int a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
+        adj[static_cast<std::size_t>(a)].push_back(b), adj[static_cast<std::size_t>(b)].push_back(a);
+      }
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    for (std::size_t i = 0; i < points.size(); ++i) queue.emplace(values[i], static_cast<int>(i));
+    std::vector<char> done(points.size(), 0);
+    while (!queue.empty()) {
+      const auto [h, v] = queue.top();
+      queue.pop();
+      if (done[static_cast<std::size_t>(v)] || h > values[static_cast<std::size_t>(v)]) continue;
+      done[static_cast<std::size_t>(v)] = 1;
+      for (int w : adj[static_cast<std::size_t>(v)]) {
+        const double hw = h + slope * (points[static_cast<std::size_t>(w)] - points[static_cast<std::size_t>(v)]).norm();
+        if (hw < values[static_cast<std::size_t>(w)]) {
+          values[static_cast<std::size_t>(w)] = hw;
+          queue.emplace(hw, w);
+        }
       }
     }
+    if (!(slope > 0)) break;
+    const std::size_t before = points.size();
+    for (std::size_t v = 0; v < before; ++v)
+      for (int w : adj[v]) {
+        if (static_cast<std::size_t>(w) <= v) continue;  // each edge once (adjacency lists both ways)
+        const double hv = values[v], hw = values[static_cast<std::size_t>(w)];
+        const double half = 0.5 * (points[static_cast<std::size_t>(w)] - points[v]).norm();
+        if (0.5 * (hv + hw) >= 0.5 * std::min(hmax, std::min(hv, hw) + slope * half)) continue;
+        points.push_back(0.5 * (points[v] + points[static_cast<std::size_t>(w)]));
+        values.push_back(hmax);
+      }
+    if (points.size() == before) break;
   }
   return SizeField::piecewise_linear(std::move(points), std::move(triangles), std::move(values));
 }

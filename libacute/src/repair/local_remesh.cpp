@@ -294,6 +294,23 @@ double movable_edge_median(const Mesh& sub) {
 
 bool remesh_region(Mesh& sub, double h, std::uint32_t seed) {
   if (!(h > 0)) return false;
+  // The re-sampled region must stay about the size it is: at a spacing far below the region's
+  // extent (the median edge of a cluster around a feature 1e-6 of its size) the darts and segment
+  // pieces would number millions, and dart throwing is quadratic in them.
+  double points = 0;
+  std::size_t vertices = 0;
+  for (auto vh : sub.vertices()) vertices += !sub.status(vh).deleted();
+  for (auto fh : sub.faces())
+    if (!sub.status(fh).deleted()) {
+      const auto p = face_points(sub, fh);
+      points += 0.5 * std::abs(signed_area2(p[0], p[1], p[2])) / (0.5 * std::sqrt(3.0) * h * h);
+    }
+  for (auto eh : sub.edges())
+    if (!sub.status(eh).deleted() && is_constrained(sub, eh)) {
+      const auto heh = sub.halfedge_handle(eh, 0);
+      points += (point2(sub, sub.to_vertex_handle(heh)) - point2(sub, sub.from_vertex_handle(heh))).norm() / h;
+    }
+  if (!(points <= 4.0 * static_cast<double>(vertices) + 64.0)) return false;
   bool removed = false;
   for (int pass = 0; pass < 2; ++pass)
     for (auto vh : sub.vertices())
