@@ -82,6 +82,18 @@ TEST(SizeField, two_tiny_features_far_apart_do_not_keep_the_field_small_between_
   EXPECT_LT(predicted_vertex_count(cdt, f), 20000);
 }
 
+TEST(SizeField, a_long_wall_is_small_where_a_tiny_feature_is_near_it) {
+  // A tiny segment 0.005 below the top wall, between two of the wall's lfs samples (stress seed
+  // 476, a tiny hole): those were at least 1/16 of the wall's length apart, and on the wall the
+  // field is the interpolation of its own samples, so it missed the feature (0.0095 there).
+  Domain d = test::unit_square();
+  d.points.insert(d.points.end(), {Point2(0.53, 0.995), Point2(0.53 + 1e-5, 0.995)});
+  d.segments.push_back({4, 5});
+  const Mesh cdt = build_cdt(d);
+  const SizeField f = local_feature_size_field(cdt, {});
+  EXPECT_LE(f({0.53, 1.0}), 0.006) << "the wall above the feature, 0.005 from it";
+}
+
 /// The unit square with an isolated interior segment of the given length far from the boundary,
 /// shorter than any spacing a vertex count would give.
 Domain square_with_short_segment(double length) {
