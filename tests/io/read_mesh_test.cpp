@@ -124,6 +124,7 @@ TEST(ReadMesh, bad_inputs_name_file_line_and_problem) {
       {"nonmanifold_edge.off", {"nonmanifold_edge.off:11:", "face 2 (vertices 0 1 3) is a third face on edge 0-1"}},
       {"nonmanifold_vertex.off", {"nonmanifold_vertex.off:15:", "face 4 (vertices 0 5 6) cannot be added", "non-manifold"}},
       {"folded_face.off", {"folded_face.off:11:", "face 2 (vertices 1 2 4) is clockwise"}},
+      {"degenerate_pinch.off", {"degenerate_pinch.off:6:", "faces meeting only at vertex 1", "cannot be ordered"}},
       {"same_direction_edge.off", {"same_direction_edge.off:9:", "face 1 (vertices 0 1 3) uses edge 0-1 in the same direction as face 0"}},
       {"truncated_faces.off", {"truncated_faces.off:", "expected 2 faces, file ends after 1"}},
       {"bad_element_index.ele", {"bad_element_index.ele:2:", "triangle 1 uses vertex 4", "3 vertices numbered from 1"}},

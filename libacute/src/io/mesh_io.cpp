@@ -143,6 +143,25 @@ Mesh build_mesh(Soup s, const WarningSink& warn) {
   }
   // Its fans come out in insertion order around the vertex: put them in geometric order.
   order_pinch_vertices(mesh);
+  {
+    // Fans that cannot be put in order (a degenerate face at the pinch, fans overlapping there)
+    // stay unlinked: the one-ring walk from the vertex then misses some of its edges.
+    std::vector<int> out_degree(mesh.n_vertices(), 0);
+    for (auto heh : mesh.halfedges()) ++out_degree[static_cast<std::size_t>(mesh.from_vertex_handle(heh).idx())];
+    for (auto vh : mesh.vertices()) {
+      if (!mesh.halfedge_handle(vh).is_valid()) continue;  // unused (warned about below)
+      int reached = 0;
+      for (auto heh = mesh.halfedge_handle(vh), h0 = heh; reached <= out_degree[static_cast<std::size_t>(vh.idx())];) {
+        ++reached;
+        heh = mesh.next_halfedge_handle(mesh.opposite_halfedge_handle(heh));
+        if (heh == h0) break;
+      }
+      const auto i = static_cast<std::size_t>(vh.idx());
+      if (reached != out_degree[i])
+        throw InvalidInput(at_vertex(i) + "the faces meeting only at " + vname(i) +
+                           " overlap or are degenerate there: they cannot be ordered around it");
+    }
+  }
   std::size_t unused = 0, first_unused = nv;
   for (auto vh : mesh.vertices())
     if (mesh.is_isolated(vh) && unused++ == 0) first_unused = static_cast<std::size_t>(vh.idx());
