@@ -310,22 +310,34 @@ class FeatureGrid {
 
 /// Dijkstra from the smallest sizes: values[w] <= values[v] + slope |vw| along every edge.
 void grade(const std::vector<Point2>& points, const std::vector<std::array<int, 3>>& triangles, std::vector<double>& values, double slope) {
-  std::vector<std::vector<int>> adj(points.size());
+  // Adjacency in compressed rows (each interior edge twice per direction: harmless).
+  std::vector<int> start(points.size() + 1, 0), adj(6 * triangles.size());
   for (const auto& t : triangles)
-    for (int i = 0; i < 3; ++i) {
-      const int a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
-      adj[static_cast<std::size_t>(a)].push_back(b), adj[static_cast<std::size_t>(b)].push_back(a);
-    }
+    for (int v : t) start[static_cast<std::size_t>(v) + 1] += 2;
+  for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  {
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (const auto& t : triangles)
+      for (int i = 0; i < 3; ++i) {
+        const auto v = static_cast<std::size_t>(t[static_cast<std::size_t>(i)]);
+        adj[static_cast<std::size_t>(fill[v]++)] = t[static_cast<std::size_t>((i + 1) % 3)];
+        adj[static_cast<std::size_t>(fill[v]++)] = t[static_cast<std::size_t>((i + 2) % 3)];
+      }
+  }
   using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
-  for (std::size_t i = 0; i < points.size(); ++i) queue.emplace(values[i], static_cast<int>(i));
+  std::vector<Item> heap;
+  heap.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) heap.emplace_back(values[i], static_cast<int>(i));
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue(std::greater<Item>(), std::move(heap));
   std::vector<char> done(points.size(), 0);
   while (!queue.empty()) {
     const auto [h, v] = queue.top();
     queue.pop();
     if (done[static_cast<std::size_t>(v)] || h > values[static_cast<std::size_t>(v)]) continue;
     done[static_cast<std::size_t>(v)] = 1;
-    for (int w : adj[static_cast<std::size_t>(v)]) {
+    for (int k = start[static_cast<std::size_t>(v)]; k < start[static_cast<std::size_t>(v) + 1]; ++k) {
+      const int w = adj[static_cast<std::size_t>(k)];
+      if (done[static_cast<std::size_t>(w)]) continue;
       const double hw = h + slope * (points[static_cast<std::size_t>(w)] - points[static_cast<std::size_t>(v)]).norm();
       if (hw < values[static_cast<std::size_t>(w)]) {
         values[static_cast<std::size_t>(w)] = hw;
@@ -351,7 +363,7 @@ void add_grading_points(LfsSamples& samples, double gradation, double hmax) {
     if (samples.lfs[i] < inf) points.push_back(samples.points[i]), values.push_back(std::min(samples.lfs[i], hmax));
   const std::size_t n_samples = points.size();
   if (n_samples < 3) return;
-  constexpr int kRounds = 3;
+  constexpr int kRounds = 2;
   for (int round = 0; round < kRounds; ++round) {
     const auto triangles = delaunay_triangles(points);
     for (std::size_t i = n_samples; i < points.size(); ++i) values[i] = hmax;
