@@ -22,6 +22,14 @@ using test::sharp_wedge;
 using test::vertex_at;
 using test::wedge_between_segments;
 
+/// The square [0, 4]^2.
+Domain square4() {
+  Domain d;
+  d.points = {Point2(0, 0), Point2(4, 0), Point2(4, 4), Point2(0, 4)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  return d;
+}
+
 /// The region of every vertex closer than r to p.
 detail::Region region_near(const Mesh& mesh, const Point2& p, double r) {
   std::vector<VertexHandle> movable;
@@ -72,10 +80,7 @@ TEST(RebuildWedge, sharp_apex_gets_an_isosceles_triangle_and_three_triangles_at_
 }
 
 TEST(RebuildWedge, wide_corner_is_left_alone) {
-  Domain square;
-  square.points = {Point2(0, 0), Point2(4, 0), Point2(4, 4), Point2(0, 4)};
-  square.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  Mesh mesh = cvt_mesh(square, 200);
+  Mesh mesh = cvt_mesh(square4(), 200);
   detail::Region region = region_near(mesh, Point2(0, 0), 1.5);
   Mesh sub = region.sub;
   const VertexHandle corner = vertex_at(sub, Point2(0, 0));
@@ -138,10 +143,7 @@ TEST(RemeshRegion, spacing_far_below_the_region_is_refused_and_leaves_it_unchang
   // The median edge of a cluster around a feature 1e-6 of its size: re-sampling the whole region
   // at that spacing meant millions of darts, each checked against every point (stress seed 158:
   // one repair iteration of 55 s under a 5 s time limit).
-  Domain d;
-  d.points = {Point2(0, 0), Point2(4, 0), Point2(4, 4), Point2(0, 4)};
-  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  Mesh mesh = cvt_mesh(d, 400);
+  Mesh mesh = cvt_mesh(square4(), 400);
   detail::Region region = region_near(mesh, Point2(2, 2), 1.2);
   Mesh sub = region.sub;
   const double h = detail::movable_edge_median(sub);
