@@ -352,8 +352,15 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   sp.lfs_factor = params.lfs_factor;
   sp.hmax = params.hmax;
   sp.max_vertices = params.max_vertices;
-  if (params.time_limit_s > 0) sp.time_limit_s = std::max(0.25 * params.time_limit_s - elapsed(), 1e-9);
+  if (params.time_limit_s > 0) {
+    sp.time_limit_s = std::max(0.25 * params.time_limit_s - elapsed(), 1e-9);
+    sp.abandon_after_s = std::max(params.time_limit_s - elapsed(), 1e-9);
+  }
   out.size_field = make_size_field(cdt, sp);
+  if (params.time_limit_s > 0 && elapsed() > params.time_limit_s) {
+    out.out_of_time = out.abandoned = true;
+    return out;
+  }
   SamplingParams samp;
   samp.seed = params.seed;
   samp.interior = params.interior;

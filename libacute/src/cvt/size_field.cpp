@@ -480,12 +480,23 @@ LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap) {
   return out;
 }
 
+namespace {
+
+/// Whether params.abandon_after_s has passed since start.
+bool past_abandon_time(const SizeFieldParams& params, std::chrono::steady_clock::time_point start) {
+  return params.abandon_after_s > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > params.abandon_after_s;
+}
+
+}  // namespace
+
 SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& params) {
+  const auto start = std::chrono::steady_clock::now();
   const DomainMeasures dm = measure_domain(cdt);
   if (!(dm.diameter > 0)) throw InvalidInput("size field: the domain has no extent");
   const double hmax = params.hmax > 0 ? params.hmax : dm.diameter / 25.0;
   const double hmin = params.hmin > 0 ? std::min(params.hmin, hmax) : std::min(kMinSizeRatio * dm.diameter, hmax);
   LfsSamples samples = local_feature_size_samples(cdt, hmax);
+  if (past_abandon_time(params, start)) return SizeField::uniform(hmax);
   add_grading_points(samples, params.gradation, hmax);
   return graded_field(samples, dm, params.lfs_factor, hmin, hmax, params.gradation);
 }
@@ -508,7 +519,9 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) 
     const double target = static_cast<double>(params.max_vertices > 0 ? std::min(params.target_vertices, params.max_vertices) : params.target_vertices);
     const double hmin = params.hmin > 0 ? std::min(params.hmin, hn) : std::min(kMinSizeRatio * dm.diameter, hn);
     LfsSamples samples = local_feature_size_samples(input_cdt, hn);
+    if (past_abandon_time(params, start)) return SizeField::uniform(hn);
     add_grading_points(samples, params.gradation, hn);
+    if (past_abandon_time(params, start)) return SizeField::uniform(hn);
     auto field_at = [&](double hmax) { return graded_field(samples, dm, params.lfs_factor, hmin, hmax, params.gradation); };
     const double top = std::max(hn, dm.diameter);
     SizeField ft = field_at(top);

@@ -132,8 +132,11 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
         cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy, p.gradient_norm, p.phase}); };
       try {
         CvtResult cvt = cvt_mesh(domain, cp);
-        if (cvt.out_of_time) result.notes.push_back("the CVT start stopped at its share of the time limit");
-        if (cvt.over_budget) {
+        if (cvt.out_of_time && !cvt.abandoned) result.notes.push_back("the CVT start stopped at its share of the time limit");
+        if (cvt.abandoned) {
+          // A huge domain whose size field alone outlasts the share: the CDT is the start.
+          result.notes.push_back("the CVT start ran out of its share of the time limit in its size field: the domain's CDT is the start");
+        } else if (cvt.over_budget) {
           // Keep the CDT, refined within the budget: the best valid mesh the limits allow.
           result.notes.push_back("the CVT start needs " + std::to_string(cvt.mesh.n_vertices()) + " vertices, over the budget of " +
                                  std::to_string(options.max_vertices) + "; using a Delaunay refinement start within it");

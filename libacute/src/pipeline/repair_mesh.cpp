@@ -266,8 +266,14 @@ Mesh required_start(const Domain& domain, RequiredStart start, const RepairMeshO
     cp.graded = true;
     cp.seed = o.seed;
     cp.time_limit_s = time_limit_s;
-    mesh = cvt_mesh(domain, cp).mesh;
-    r.start = "cvt";
+    CvtResult cvt = cvt_mesh(domain, cp);
+    if (cvt.abandoned) {
+      r.notes.push_back("the CVT start ran out of its share of the time limit in its size field: the CDT is the start");
+      r.start = "cdt";
+    } else {
+      mesh = std::move(cvt.mesh);
+      r.start = "cvt";
+    }
   } else {
     r.start = "cdt";
   }

@@ -100,6 +100,9 @@ struct CvtResult {
   double gradient_norm = 0;
   bool over_budget = false;   ///< more vertices than max_vertices even at the coarsest field tried
   bool out_of_time = false;   ///< the time limit ended the start before the optimisation did
+  /// The time limit ran out before there were samples to optimise (a huge domain: its size field
+  /// alone outlasts the limit): mesh is empty, the caller keeps a mesh it has (the domain's CDT)
+  bool abandoned = false;
 };
 
 /// build_cdt(domain) -> size field -> sample_domain -> cvt_optimize.

@@ -74,6 +74,10 @@ struct SizeFieldParams {
   /// > 0: the count calibration stops after this many seconds with a field predicting at most the
   /// count (the coarsening of an over-fine feature-bound field always runs: it bounds the samples)
   double time_limit_s = 0;
+  /// > 0: once this many seconds have passed (checked after the lfs samples, which are the first
+  /// cost on a huge boundary), a uniform field is returned at once: the caller is past its own
+  /// deadline and gives the start up (cvt_mesh: CvtResult::abandoned)
+  double abandon_after_s = 0;
 };
 
 /// Area, boundary length and diameter (bounding-box diagonal) of a meshed domain.
