@@ -369,23 +369,30 @@ void add_grading_points(LfsSamples& samples, double gradation, double hmax) {
     for (std::size_t i = n_samples; i < points.size(); ++i) values[i] = hmax;
     grade(points, triangles, values, slope);
     const std::size_t before = points.size();
+    // Each edge once, hull edges included (they have one triangle, in either orientation).
+    std::vector<std::pair<std::size_t, std::size_t>> edges;
+    edges.reserve(3 * triangles.size());
     for (const auto& t : triangles)
       for (int i = 0; i < 3; ++i) {
-        const auto v = static_cast<std::size_t>(t[static_cast<std::size_t>(i)]), w = static_cast<std::size_t>(t[static_cast<std::size_t>((i + 1) % 3)]);
-        if (v > w) continue;  // each interior edge once (its other triangle has it the other way round)
-        const double hv = values[v], hw = values[w];
-        const Point2 pv = points[v], pw = points[w];
-        const double half = 0.5 * (pw - pv).norm();
-        if (0.5 * (hv + hw) >= 0.5 * std::min(hmax, std::min(hv, hw) + slope * half)) continue;
-        const Point2 u = (pw - pv) / (2.0 * half);
-        for (const auto& [from, dir, h0] : {std::tuple{pv, u, hv}, std::tuple{pw, Point2(-u), hw}})
-          for (double r = h0 / slope; r < half && h0 + slope * r < hmax; r = 2.0 * r + h0 / slope) {
-            points.push_back(from + r * dir);
-            values.push_back(hmax);
-          }
-        points.push_back(pv + half * u);
-        values.push_back(hmax);
+        const auto a = static_cast<std::size_t>(t[static_cast<std::size_t>(i)]), b = static_cast<std::size_t>(t[static_cast<std::size_t>((i + 1) % 3)]);
+        edges.emplace_back(std::min(a, b), std::max(a, b));
       }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    for (const auto& [v, w] : edges) {
+      const double hv = values[v], hw = values[w];
+      const Point2 pv = points[v], pw = points[w];
+      const double half = 0.5 * (pw - pv).norm();
+      if (0.5 * (hv + hw) >= 0.5 * std::min(hmax, std::min(hv, hw) + slope * half)) continue;
+      const Point2 u = (pw - pv) / (2.0 * half);
+      for (const auto& [from, dir, h0] : {std::tuple{pv, u, hv}, std::tuple{pw, Point2(-u), hw}})
+        for (double r = h0 / slope; r < half && h0 + slope * r < hmax; r = 2.0 * r + h0 / slope) {
+          points.push_back(from + r * dir);
+          values.push_back(hmax);
+        }
+      points.push_back(pv + half * u);
+      values.push_back(hmax);
+    }
     if (points.size() == before) break;
   }
   for (std::size_t i = n_samples; i < points.size(); ++i) {
@@ -453,10 +460,10 @@ LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap) {
     if (!(len > 0)) continue;
     const Point2 u = (b - a) / len;
     // lfs is 1-Lipschitz: samples one lfs apart keep it within a factor 2 in between.
-    // The floor bounds the samples of a long segment beside a long thin feature (16 per spacing);
+    // min_step bounds the samples of a long segment beside a long thin feature (16 per spacing);
     // a whole-segment floor (len / 16) missed a tiny hole 1/400 of a long wall away (seed 476).
-    const double floor = std::min(len, spacing_cap) / 16.0;
-    auto step = [&](double d) { return std::max(std::min(d, spacing_cap), floor); };
+    const double min_step = std::min(len, spacing_cap) / 16.0;
+    auto step = [&](double d) { return std::max(std::min(d, spacing_cap), min_step); };
     const double end_step = step(vertex_lfs[static_cast<std::size_t>(e[1])]);
     for (double t = step(vertex_lfs[static_cast<std::size_t>(e[0])]); t < len - 0.5 * end_step;) {
       const Point2 x = a + t * u;
