@@ -4,10 +4,12 @@
 
 #include <OpenMesh/Core/Utils/Property.hh>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <memory>
 #include <numeric>
+#include <vector>
 #include <limits>
 
 namespace acute {
@@ -93,28 +95,53 @@ bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, con
   const std::int64_t inv = period == 1 ? 0 : inverse_mod(dj1, period);
   // Stay near q: within 1/64 of the segment (or kWindow columns), as the window search does.
   const i128 reach = std::max<i128>(kWindow, static_cast<i128>(dk < 0 ? -dk : dk) / 64);
+  // The lattice point of column offset m (from a) whose line offset is res, if it qualifies.
+  auto accept = [&](i128 m, std::int64_t res) {
+    if (m - qk > reach || qk - m > reach) return false;
+    const i128 num = m * dj1 - res;  // == n dk1
+    if (num % dk1 != 0) return false;  // cannot happen; guards the arithmetic
+    const i128 n = num / dk1;
+    const i128 ck = static_cast<i128>(ak) + m, cj = static_cast<i128>(aj) + n;
+    if (ck > (static_cast<i128>(1) << 62) || ck < -(static_cast<i128>(1) << 62) || cj > (static_cast<i128>(1) << 62) || cj < -(static_cast<i128>(1) << 62)) return false;
+    Point2 c;
+    c[k] = static_cast<double>(static_cast<std::int64_t>(ck)) * uk;  // an integer below 2^53 in practice: exact
+    c[j] = static_cast<double>(static_cast<std::int64_t>(cj)) * uj;
+    if (ulp_of(c[k]) != uk || ulp_of(c[j]) != uj) return false;  // left the binade: not the lattice point
+    if (!in_bracket(ends, c, lo, hi) || line_deviation(ends, c) > kMaxSegmentDeviation) return false;
+    out = c;
+    return true;
+  };
+  if (2 * reach + 1 < static_cast<i128>(r_max)) {
+    // Fewer columns in reach than offsets to try (a short segment, or q near an end where most
+    // offsets only fall outside the bracket): walk the columns, the nearest to the line first.
+    // The offset loop below took 65,536 rounds per failed snap (most of the fuzz_mesher timeout).
+    thread_local std::vector<std::pair<std::int64_t, std::int64_t>> columns;  // (rank of |res|, m)
+    columns.clear();
+    const auto r = static_cast<std::int64_t>(reach);
+    for (std::int64_t m = qk - r; m <= qk + r; ++m) {
+      std::int64_t res = period == 1 ? 0 : static_cast<std::int64_t>(((static_cast<i128>(m) * dj1) % period + period) % period);
+      if (2 * res > period) res -= period;
+      const std::int64_t mag = res < 0 ? -res : res;
+      if (mag > r_max) continue;
+      columns.emplace_back(2 * mag + (res < 0), m);  // as the offset loop: r before -r
+    }
+    std::sort(columns.begin(), columns.end(), [&](const auto& x, const auto& y) {
+      if (x.first != y.first) return x.first < y.first;
+      const std::int64_t dx = x.second > qk ? x.second - qk : qk - x.second, dy = y.second > qk ? y.second - qk : qk - y.second;
+      return dx != dy ? dx < dy : x.second < y.second;
+    });
+    for (const auto& [rank, m] : columns)
+      if (accept(m, (rank & 1) ? -(rank / 2) : rank / 2)) return true;
+    return false;
+  }
   for (std::int64_t r = 0; r <= r_max; ++r) {
     for (const std::int64_t res : {r, -r}) {
       if (r == 0 && res != r) continue;
       // m dj1 == res (mod dk1): m0 the solution in [0, period).
       const std::int64_t m0 = period == 1 ? 0 : static_cast<std::int64_t>(((static_cast<i128>(res) * inv) % period + period) % period);
       const std::int64_t t = static_cast<std::int64_t>(std::llround(static_cast<double>(qk - m0) / static_cast<double>(period)));
-      for (const std::int64_t dt : {0, -1, 1}) {
-        const i128 m = static_cast<i128>(m0) + static_cast<i128>(t + dt) * period;
-        if (m - qk > reach || qk - m > reach) continue;
-        const i128 num = m * dj1 - res;  // == n dk1
-        if (num % dk1 != 0) continue;    // cannot happen; guards the arithmetic
-        const i128 n = num / dk1;
-        const i128 ck = static_cast<i128>(ak) + m, cj = static_cast<i128>(aj) + n;
-        if (ck > (static_cast<i128>(1) << 62) || ck < -(static_cast<i128>(1) << 62) || cj > (static_cast<i128>(1) << 62) || cj < -(static_cast<i128>(1) << 62)) continue;
-        Point2 c;
-        c[k] = static_cast<double>(static_cast<std::int64_t>(ck)) * uk;  // an integer below 2^53 in practice: exact
-        c[j] = static_cast<double>(static_cast<std::int64_t>(cj)) * uj;
-        if (ulp_of(c[k]) != uk || ulp_of(c[j]) != uj) continue;  // left the binade: not the lattice point
-        if (!in_bracket(ends, c, lo, hi) || line_deviation(ends, c) > kMaxSegmentDeviation) continue;
-        out = c;
-        return true;
-      }
+      for (const std::int64_t dt : {0, -1, 1})
+        if (accept(static_cast<i128>(m0) + static_cast<i128>(t + dt) * period, res)) return true;
     }
   }
   return false;

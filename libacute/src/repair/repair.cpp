@@ -168,7 +168,7 @@ class Repairer {
       bool moved_any = false;
       std::size_t k = 0;
       for (auto vh : vertices) {
-        if ((++k & 1023) == 0 && out_of_time()) return;  // a global sweep on a huge mesh outlasts the limit
+        if ((++k & 63) == 0 && out_of_time()) return;  // a global sweep on a huge mesh outlasts the limit
         if (mesh_.status(vh).deleted()) continue;
         if (relocate_for_angles(mesh_, vh, bounds_, forced_)) {
           ++result_.relocated;
@@ -341,9 +341,12 @@ class Repairer {
   /// Relocates the movable vertices of a region copy (a few sweeps, Delaunay restored after each move).
   void smooth_sub(Mesh& sub, const std::vector<bool>& forced, int sweeps) {
     std::vector<EdgeHandle> queue;
+    std::size_t k = 0;
     for (int s = 0; s < sweeps; ++s) {
       bool moved = false;
       for (auto vh : sub.vertices()) {
+        // A large region's sweeps outlast a short limit (the sanitizer build took 25 s under 2 s).
+        if ((++k & 63) == 0 && out_of_time()) return;
         if (sub.status(vh).deleted() || is_input(sub, vh)) continue;
         if (relocate_for_angles(sub, vh, bounds_, forced)) {
           moved = true;
@@ -376,7 +379,7 @@ class Repairer {
     std::sort(level1.begin(), level1.end(), [](const Outcome& a, const Outcome& b) { return a.score < b.score; });
     for (std::size_t i = 0; i < std::min<std::size_t>(3, level1.size()); ++i) {
       Outcome& o = level1[i];
-      if (o.score.bad == 0 && o.score.infeasible == 0) break;
+      if ((o.score.bad == 0 && o.score.infeasible == 0) || out_of_time()) break;
       Mesh relaxed = o.mesh;
       relax_sub(relaxed, region.forced);
       const Score r = score(relaxed, region.forced);
