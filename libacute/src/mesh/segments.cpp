@@ -95,9 +95,19 @@ bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, con
   const std::int64_t inv = period == 1 ? 0 : inverse_mod(dj1, period);
   // Stay near q: within 1/64 of the segment (or kWindow columns), as the window search does.
   const i128 reach = std::max<i128>(kWindow, static_cast<i128>(dk < 0 ? -dk : dk) / 64);
+  // Columns in reach, and strictly inside the bracket where it lies on the same grid (a split
+  // near a corner: most columns in reach are outside the edge being split).
+  i128 m_lo = qk - reach, m_hi = qk + reach;
+  std::int64_t il = 0, ih = 0;
+  if (lo != nullptr && hi != nullptr && grid_index((*lo)[k], uk, il) && grid_index((*hi)[k], uk, ih)) {
+    if (il > ih) std::swap(il, ih);
+    m_lo = std::max<i128>(m_lo, static_cast<i128>(il) - ak + 1);
+    m_hi = std::min<i128>(m_hi, static_cast<i128>(ih) - ak - 1);
+  }
+  if (m_lo > m_hi) return false;
   // The lattice point of column offset m (from a) whose line offset is res, if it qualifies.
   auto accept = [&](i128 m, std::int64_t res) {
-    if (m - qk > reach || qk - m > reach) return false;
+    if (m < m_lo || m > m_hi) return false;
     const i128 num = m * dj1 - res;  // == n dk1
     if (num % dk1 != 0) return false;  // cannot happen; guards the arithmetic
     const i128 n = num / dk1;
@@ -111,14 +121,12 @@ bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, con
     out = c;
     return true;
   };
-  if (2 * reach + 1 < static_cast<i128>(r_max)) {
-    // Fewer columns in reach than offsets to try (a short segment, or q near an end where most
-    // offsets only fall outside the bracket): walk the columns, the nearest to the line first.
+  if (m_hi - m_lo + 1 < 2 * static_cast<i128>(r_max)) {
+    // Fewer columns than line offsets to try: walk the columns, the nearest to the line first.
     // The offset loop below took 65,536 rounds per failed snap (most of the fuzz_mesher timeout).
     thread_local std::vector<std::pair<std::int64_t, std::int64_t>> columns;  // (rank of |res|, m)
     columns.clear();
-    const auto r = static_cast<std::int64_t>(reach);
-    for (std::int64_t m = qk - r; m <= qk + r; ++m) {
+    for (auto m = static_cast<std::int64_t>(m_lo); m <= static_cast<std::int64_t>(m_hi); ++m) {
       std::int64_t res = period == 1 ? 0 : static_cast<std::int64_t>(((static_cast<i128>(m) * dj1) % period + period) % period);
       if (2 * res > period) res -= period;
       const std::int64_t mag = res < 0 ? -res : res;
