@@ -352,7 +352,7 @@ class Runner:
     def command(self, mesher, poly, out, n, h, angle):
         a = self.args
         if mesher == "acute":
-            return [a.acute, "mesh", poly, "-o", out, "--vertices", str(n), "-q", "--json"], out
+            return [a.acute, "mesh", poly, "-o", out, "--vertices", str(n), "-q", "--json"] + a.acute_args.split(), out
         if mesher.startswith("cgal"):
             cmd = [a.cgal, poly, out, "--angle", repr(angle), "--size", repr(h)]
             if mesher.endswith("+lloyd"):
@@ -478,8 +478,8 @@ def markdown(report):
     L = ["# acute vs CGAL Mesh_2 vs gmsh — %s mode, %s" % (meta["mode"], meta["date"]), "",
          "Machine: %s; %s cores; Python %s; load average at start %s, at end %s." % (
              meta["cpu"], meta["cores"], meta["python"], meta["load_start"], meta["load_end"]),
-         "acute: `%s` (%s). CGAL %s (`%s`). gmsh %s (`%s`). Referee: `%s --tolerance %s`." % (
-             meta["acute"], meta["acute_rev"], meta["cgal_version"], meta["cgal"], meta["gmsh_version"], meta["gmsh"],
+         "acute: `%s%s` (%s). CGAL %s (`%s`). gmsh %s (`%s`). Referee: `%s --tolerance %s`." % (
+             meta["acute"], (" " + meta["acute_args"]) if meta.get("acute_args") else "", meta["acute_rev"], meta["cgal_version"], meta["cgal"], meta["gmsh_version"], meta["gmsh"],
              meta["meshcheck"], meta.get("meshcheck_tolerance", "1e-9")),
          "Wall time of the whole process (read, mesh, write), median of %d (%d at >= 200k); cpu = user + sys; peak RSS "
          "from /usr/bin/time. All meshers single-threaded, run one at a time. Peers' size "
@@ -628,6 +628,7 @@ def main():
     ap.add_argument("--meshcheck", default=os.path.join(REPO, "..", "shared", "tools", "meshcheck"))
     ap.add_argument("--meshcheck-tolerance", default="1e-9", help="meshcheck --tolerance (default 1e-9)")
     ap.add_argument("--cgal-max-angles", default="30,28,26,24,22")
+    ap.add_argument("--acute-args", default="", help="extra options for acute mesh, e.g. '--time-limit 60'")
     ap.add_argument("--timeout", type=float, help="seconds per mesher run (default 120 quick, 900 full)")
     ap.add_argument("--tolerance-count", type=float, default=0.10, help="accepted relative miss of the vertex count")
     ap.add_argument("--max-tuning", type=int, default=3)
@@ -695,7 +696,7 @@ def main():
         pass
     meta = {"mode": mode, "date": date, "cpu": cpu_name(), "cores": os.cpu_count(), "python": platform.python_version(),
             "uname": " ".join(platform.uname()), "load_start": "%.2f" % os.getloadavg()[0], "acute": a.acute,
-            "acute_rev": acute_rev, "cgal": a.cgal, "cgal_version": cgal_version(), "gmsh": a.gmsh,
+            "acute_args": a.acute_args, "acute_rev": acute_rev, "cgal": a.cgal, "cgal_version": cgal_version(), "gmsh": a.gmsh,
             "gmsh_version": tool_version([a.gmsh, "--version"]) if a.gmsh else None, "meshcheck": a.meshcheck,
             "reps": a.reps, "big_reps": a.big_reps, "sizes": sizes, "million_on_square": million, "meshers": meshers,
             "tolerance_count": a.tolerance_count, "meshcheck_tolerance": a.meshcheck_tolerance, "cgal_max_angles": a.cgal_max_angles, "skipped": skipped,
