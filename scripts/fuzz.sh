@@ -25,12 +25,13 @@ if [ "$target" = build ]; then
   exit 0
 fi
 if [ "$target" = regress ]; then
-  # Replays tests/fuzz/regressions/<target>-<what> with its target: lists the ones still failing.
+  # Replays tests/fuzz/regressions/<target>-<what> with its target (and the runs' time limit per
+  # input): lists the ones still failing.
   cmake --build "$dir" -j"$jobs" >/dev/null
   bad=0
   for f in tests/fuzz/regressions/*; do
     t=$(basename "$f"); t=${t%%-*}
-    if "$dir/bin/$t" "$f" >/dev/null 2>&1; then echo "fixed   $(basename "$f")"; else echo "FAILING $(basename "$f")"; bad=$((bad + 1)); fi
+    if "$dir/bin/$t" -timeout=10 "$f" >/dev/null 2>&1; then  # the runs' -timeout: a hang fails too echo "fixed   $(basename "$f")"; else echo "FAILING $(basename "$f")"; bad=$((bad + 1)); fi
   done
   exit $(( bad > 0 ))
 fi

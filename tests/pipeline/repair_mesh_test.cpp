@@ -157,6 +157,37 @@ TEST(RepairMesh, non_delaunay_ugly_mesh_becomes_acute) {
   expect_repaired(in, r, "ugly_mesh");
 }
 
+/// The unit square as an n x n grid of right triangles (every one has a 90-degree angle).
+Mesh grid_mesh(int n) {
+  std::vector<Point2> pts;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) pts.emplace_back(static_cast<double>(i) / n, static_cast<double>(j) / n);
+  std::vector<std::array<int, 3>> tris;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
+      tris.push_back({a, b, c});
+      tris.push_back({a, c, d});
+    }
+  return make_mesh(pts, tris);
+}
+
+TEST(RepairMesh, fine_input_keeps_its_resolution) {
+  // 1,681 vertices; the feature-graded field alone (a square has no small feature) would give
+  // about 400: a repair must not coarsen what the user made fine.
+  const Mesh in = grid_mesh(40);
+  const RepairMeshResult r = repair_mesh(in);
+  expect_repaired(in, r, "grid_mesh(40)");
+  EXPECT_GE(r.n_vertices, in.n_vertices() * 8 / 10);
+  EXPECT_LE(r.n_vertices, in.n_vertices() * 13 / 10);
+  // An explicit size still rules.
+  RepairMeshOptions o;
+  o.size = 0.1;
+  const RepairMeshResult coarse = repair_mesh(in, o);
+  expect_repaired(in, coarse, "grid_mesh(40) at size 0.1");
+  EXPECT_LT(coarse.n_vertices, in.n_vertices() / 2);
+}
+
 TEST(RepairMesh, interior_feature_edges_are_kept) {
   const Mesh in = ugly_mesh();
   // a polyline of interior edges through the middle row

@@ -217,7 +217,7 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
   cmd->add_flag("--allow-right", args->options.allow_right, "With --keep-vertices (or .json input): right angles are fine");
   cmd->add_option("--start", args->start, "--keep-vertices start: auto | cdt | refine | cvt")->capture_default_str();
   cmd->add_option("--method", args->method, "Remesh method: cdt | refine | cvt | acute")->capture_default_str();
-  auto* size = cmd->add_option("--size", args->options.size, "Target edge length (default: graded)");
+  auto* size = cmd->add_option("--size", args->options.size, "Target edge length (default: graded by the features, at most the input's mean spacing)");
   cmd->add_option("--vertices", args->options.target_vertices, "Target vertex count")->excludes(size);
   cmd->add_option("--seed", args->options.seed, "Random seed (deterministic output)")->capture_default_str();
   cmd->add_option("--max-iterations", args->options.max_iterations, "Repair iteration cap (0: default)");

@@ -39,7 +39,13 @@ struct MeshOptions {
   double size = 0;              ///< target edge length (0: graded from the local feature size)
   std::size_t target_vertices = 0;
   double gradation = 1.3;
+  /// > 0: the graded field's largest edge length (default: kDefaultMaxSizeRatio * the diameter)
+  double max_size = 0;
   unsigned seed = 1;
+  /// With Method::Cvt: optimise as the acute method's start (a short optimisation, room for
+  /// interior vertices in strips between input points), not to convergence: for callers that run
+  /// the acute repair themselves (acute::repair_mesh)
+  bool cvt_as_repair_start = false;
   int max_iterations = 0;       ///< 0: the method's default
   std::size_t max_vertices = 50'000'000;
   double time_limit_s = 0;      ///< 0: none

@@ -51,7 +51,7 @@ struct RepairMeshOptions {
   RequiredStart start = RequiredStart::Auto;  ///< keep_vertices only
   Method method = Method::Acute;  ///< default mode only
   double size = 0;                 ///< target edge length (0: graded)
-  std::size_t target_vertices = 0; ///< 0: as many as the input has (graded)
+  std::size_t target_vertices = 0; ///< 0 (and size 0): graded by the features, never coarser than the input's mean spacing
   unsigned seed = 1;
   int max_iterations = 0;          ///< 0: the repair's default
   std::size_t max_vertices = 50'000'000;

@@ -500,7 +500,7 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
   const auto start = std::chrono::steady_clock::now();
   const DomainMeasures dm = measure_domain(cdt);
   if (!(dm.diameter > 0)) throw InvalidInput("size field: the domain has no extent");
-  const double hmax = params.hmax > 0 ? params.hmax : dm.diameter / 25.0;
+  const double hmax = params.hmax > 0 ? params.hmax : kDefaultMaxSizeRatio * dm.diameter;
   const double hmin = params.hmin > 0 ? std::min(params.hmin, hmax) : std::min(kMinSizeRatio * dm.diameter, hmax);
   LfsSamples samples = local_feature_size_samples(cdt, hmax);
   if (past_abandon_time(params, start)) return SizeField::uniform(hmax);

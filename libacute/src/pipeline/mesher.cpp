@@ -118,11 +118,12 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       cp.target_vertices = options.target_vertices;
       cp.graded = options.size <= 0;
       cp.gradation = options.gradation;
+      cp.hmax = options.max_size;
       cp.seed = options.seed;
       // Share a time limit between the CVT (at most half) and the repair (the rest).
       if (options.time_limit_s > 0) cp.time_limit_s = std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);
       cp.max_vertices = options.max_vertices;
-      if (options.method == Method::Acute) {
+      if (options.method == Method::Acute || options.cvt_as_repair_start) {
         // The repair does not need a converged CVT, only well-spread vertices: a short optimisation.
         cp.lbfgs_iterations = 40;
         cp.lfs_factor = 0.7;  // room for interior vertices in strips between input points

@@ -59,6 +59,8 @@ class SizeField {
 /// are resolved (a coordinate still has some 10^7 representable values per such spacing), and the
 /// vertex-count caps keep their cost bounded.
 constexpr double kMinSizeRatio = 1e-9;
+/// The graded field's default largest size, relative to the domain's diameter.
+constexpr double kDefaultMaxSizeRatio = 1.0 / 25.0;
 
 struct SizeFieldParams {
   double size = 0;                ///< > 0: uniform field of this edge length
@@ -67,7 +69,7 @@ struct SizeFieldParams {
   double gradation = 1.3;         ///< graded field: |grad h| <= gradation - 1
   double lfs_factor = 1.0;        ///< graded field: h = lfs_factor * local feature size at input points
   double hmin = 0;                ///< graded field clamp; 0: kMinSizeRatio * diameter
-  double hmax = 0;                ///< graded field clamp; 0: diameter / 25
+  double hmax = 0;                ///< graded field clamp; 0: kDefaultMaxSizeRatio * diameter
   /// > 0: with target_vertices, the field predicts at most this many vertices (coarsening the
   /// feature-bound sizes when the features alone would need more)
   std::size_t max_vertices = 0;
