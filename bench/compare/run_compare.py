@@ -571,6 +571,28 @@ def summary(report):
     return L
 
 
+def merge_reports(paths):
+    """One report from runs made separately (e.g. 2k/20k with 3 repetitions, 200k/1M with one): the
+    runs in order, each mesher once, and every setting that differs listed as 'value (file); ...'."""
+    reports = []
+    for p in paths:
+        with open(p) as f:
+            reports.append((os.path.basename(p), json.load(f)))
+    meta = dict(reports[0][1]["meta"])
+    for key in {k for _, r in reports for k in r["meta"]}:
+        values = [(name, r["meta"].get(key)) for name, r in reports]
+        if key in ("meshers", "sizes"):
+            merged = []
+            for _, v in values:
+                merged += [x for x in (v or []) if x not in merged]
+            meta[key] = merged
+        elif len({json.dumps(v, sort_keys=True) for _, v in values}) > 1:
+            meta[key] = "; ".join("%s (%s)" % (v, name) for name, v in values)
+    meta["reps"] = max(int(r["meta"]["reps"]) for _, r in reports)
+    meta["big_reps"] = min(int(r["meta"].get("big_reps") or r["meta"]["reps"]) for _, r in reports)
+    return {"meta": meta, "runs": [run for _, r in reports for run in r["runs"]]}
+
+
 def tool_version(cmd):
     try:
         p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=30)
@@ -634,12 +656,21 @@ def main():
     ap.add_argument("--max-tuning", type=int, default=3)
     ap.add_argument("--out", help="results folder (default results/compare/<date>)")
     ap.add_argument("--keep-meshes", action="store_true")
-    ap.add_argument("--render", metavar="JSON", help="only rewrite the Markdown next to a results JSON")
+    ap.add_argument("--render", metavar="JSON", nargs="+",
+                    help="only rewrite the Markdown next to a results JSON; with several, merge them into "
+                         "OUT/NAME.json and .md (default: beside the first, 'merged')")
     a = ap.parse_args()
     if a.render:
-        with open(a.render) as f:
-            report = json.load(f)
-        with open(os.path.splitext(a.render)[0] + ".md", "w") as f:
+        if len(a.render) == 1:
+            with open(a.render[0]) as f:
+                report = json.load(f)
+            base = os.path.splitext(a.render[0])[0]
+        else:
+            report = merge_reports(a.render)
+            base = os.path.join(a.out or os.path.dirname(a.render[0]), a.name or "merged")
+            with open(base + ".json", "w") as f:
+                json.dump(report, f, indent=1)
+        with open(base + ".md", "w") as f:
             f.write(markdown(report))
         return
 
