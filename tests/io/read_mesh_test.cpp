@@ -220,3 +220,47 @@ TEST(ReadMesh, unknown_extension_and_missing_file_are_io_errors) {
   expect_error<IoError>([] { io::read_mesh(data("x.stl")); }, {"x.stl", "unknown mesh format"}, "x.stl");
   expect_error<IoError>([] { io::read_mesh(data("missing.off")); }, {"missing.off", "cannot open"}, "missing.off");
 }
+
+// --- edges tagged in the file (OBJ polylines) ---------------------------------------------
+
+TEST(ReadTaggedEdges, obj_polyline_gives_each_consecutive_pair_with_its_line) {
+  const auto edges = io::read_tagged_edges(data("tagged_polyline.obj"));
+  ASSERT_EQ(edges.size(), 2u);
+  EXPECT_EQ(edges[0].vertices, (std::array<int, 2>{5, 10}));
+  EXPECT_EQ(edges[1].vertices, (std::array<int, 2>{10, 9}));
+  EXPECT_EQ(edges[0].line, 37);
+  EXPECT_EQ(edges[1].line, 37);
+  // The mesh itself reads as before: the polyline is not a face.
+  EXPECT_EQ(io::read_mesh(data("tagged_polyline.obj")).n_faces(), 18u);
+  EXPECT_TRUE(io::read_tagged_edges(std::string(ACUTE_MESHES_DIR) + "/grid.off").empty()) << "OFF tags no edge";
+}
+
+TEST(ReadTaggedEdges, relative_and_slashed_indices_resolve_and_bad_ones_name_the_line) {
+  const std::string path = test::output("tagged_relative.obj");
+  {
+    std::ofstream f(path);
+    f << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl -3/1 2/2\n";
+  }
+  const auto edges = io::read_tagged_edges(path);
+  ASSERT_EQ(edges.size(), 1u);
+  EXPECT_EQ(edges[0].vertices, (std::array<int, 2>{0, 1}));
+  const std::vector<std::pair<std::string, std::vector<std::string>>> bad = {
+      {"l 1 9\n", {":5:", "vertex 9", "out of range"}},
+      {"l 1\n", {":5:", "polyline"}},
+      {"l 2 2\n", {":5:", "repeats vertex 2"}},
+      {"l 1 x\n", {":5:", "'x' is not a vertex index"}},
+  };
+  for (const auto& [line, pieces] : bad) {
+    {
+      std::ofstream f(path);
+      f << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n" << line;
+    }
+    try {
+      io::read_tagged_edges(path);
+      ADD_FAILURE() << line << ": no error";
+    } catch (const InvalidInput& e) {
+      for (const auto& piece : pieces) EXPECT_NE(std::string(e.what()).find(piece), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).rfind(path, 0), 0u) << "names the file: " << e.what();
+    }
+  }
+}

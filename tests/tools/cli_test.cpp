@@ -1,9 +1,12 @@
 // The `acute` program run as a user runs it: pictures (mesh, labels, angle histogram, before /
 // after) and the progress line (on a terminal only).
 #include <acute/io/io.h>
+#include <acute/mesh/mesh.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +14,8 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -151,6 +156,56 @@ TEST(Pictures, RepairWritesDifferentBeforeAndAfterPictures) {
     EXPECT_EQ(parse_svg(prefix + "_after_histogram.svg"), "ok " + std::to_string(3 * n_triangles(out("grid_fixed.off"))) + " 0\n");
     EXPECT_EQ(parse_svg(prefix + "_before.svg"), "ok 0 0\n");
   }
+}
+
+/// True when the segment p-q is covered by edges of `mesh`: the vertices within 1e-12 of it (by
+/// distance to its line, between its ends) form a chain of edges from p to q.
+bool segment_is_a_chain_of_edges(const acute::Mesh& mesh, const acute::Point2& p, const acute::Point2& q) {
+  std::vector<std::pair<double, acute::VertexHandle>> on;
+  const acute::Point2 d = q - p;
+  for (auto vh : mesh.vertices()) {
+    const acute::Point2 x(mesh.point(vh)[0], mesh.point(vh)[1]);
+    const double t = (x - p).dot(d) / d.squaredNorm();
+    const double off = std::abs(d.x() * (x - p).y() - d.y() * (x - p).x()) / d.norm();
+    if (t > -1e-12 && t < 1 + 1e-12 && off < 1e-12) on.emplace_back(t, vh);
+  }
+  std::sort(on.begin(), on.end());
+  if (on.size() < 2 || on.front().first > 1e-12 || on.back().first < 1 - 1e-12) return false;
+  for (std::size_t k = 0; k + 1 < on.size(); ++k)
+    if (!mesh.find_halfedge(on[k].second, on[k + 1].second).is_valid()) return false;
+  return true;
+}
+
+TEST(RepairFeatures, ObjPolylinesInTheInputAreKeptAsEdges) {
+  const std::string in = std::string(ACUTE_TEST_DATA_DIR) + "/tagged_polyline.obj", fixed = out("tagged_fixed.off");
+  const CliRun r = acute("repair " + quoted(in) + " -o " + quoted(fixed), "repair_tagged");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const acute::Mesh m = acute::io::read_mesh(fixed);
+  EXPECT_TRUE(segment_is_a_chain_of_edges(m, {1, 1}, {2, 2}));
+  EXPECT_TRUE(segment_is_a_chain_of_edges(m, {2, 2}, {1, 2}));
+  // The same mesh without the tag: the repair is free to cross the polyline (and does).
+  const std::string plain = out("untagged.obj");
+  {
+    std::ifstream src(in);
+    std::ofstream dst(plain);
+    for (std::string line; std::getline(src, line);)
+      if (line.rfind("l ", 0) != 0) dst << line << "\n";
+  }
+  const CliRun u = acute("repair " + quoted(plain) + " -o " + quoted(out("untagged_fixed.off")), "repair_untagged");
+  ASSERT_EQ(u.code, 0) << u.err;
+  const acute::Mesh mu = acute::io::read_mesh(out("untagged_fixed.off"));
+  EXPECT_FALSE(segment_is_a_chain_of_edges(mu, {1, 1}, {2, 2}) && segment_is_a_chain_of_edges(mu, {2, 2}, {1, 2}));
+}
+
+TEST(RepairFeatures, ATaggedPairThatIsNoEdgeIsRefusedWithItsLine) {
+  const std::string bad = out("tagged_not_an_edge.obj");
+  {
+    std::ofstream f(bad);
+    f << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\nl 2 4\n";
+  }
+  const CliRun r = acute("repair " + quoted(bad) + " -o " + quoted(out("tagged_not_an_edge.off")), "repair_tagged_bad");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find(bad + ":7: polyline edge 2-4 is not an edge of the mesh"), std::string::npos) << r.err;
 }
 
 TEST(Pictures, MeshWritesTheCdtAsBefore) {

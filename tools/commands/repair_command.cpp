@@ -12,12 +12,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <set>
 #include <sstream>
 
 namespace acute::cli {
@@ -64,6 +66,21 @@ std::vector<std::array<int, 2>> read_features(const std::string& path) {
   return features;
 }
 
+/// Appends the edges the input file tags (OBJ polylines) to the features, each pair once; a tagged
+/// pair that is not an edge of the mesh is refused naming its line.
+void add_tagged_features(const std::string& path, const Mesh& mesh, std::vector<std::array<int, 2>>& features) {
+  const std::vector<io::TaggedEdge> tagged = io::read_tagged_edges(path);
+  std::set<std::pair<int, int>> have;
+  for (const auto& f : features) have.insert(std::minmax(f[0], f[1]));
+  for (const auto& t : tagged) {
+    const auto [a, b] = t.vertices;
+    if (static_cast<std::size_t>(std::max(a, b)) >= mesh.n_vertices() || !mesh.find_halfedge(VertexHandle(a), VertexHandle(b)).is_valid())
+      throw InvalidInput(path + ":" + std::to_string(t.line) + ": polyline edge " + std::to_string(a + 1) + "-" + std::to_string(b + 1) +
+                         " is not an edge of the mesh");
+    if (have.insert(std::minmax(a, b)).second) features.push_back({a, b});
+  }
+}
+
 int run_repair(RepairArgs args, const GlobalOptions& global) {
   const auto t0 = std::chrono::steady_clock::now();
   RepairMeshOptions& options = args.options;
@@ -107,6 +124,7 @@ int run_repair(RepairArgs args, const GlobalOptions& global) {
       if (!args.pictures.empty()) before = build_domain_cdt(domain);
     } else {
       const Mesh mesh = io::read_mesh(args.input, warn);
+      add_tagged_features(args.input, mesh, options.features);
       result = repair_mesh(mesh, options);
       if (!args.pictures.empty()) {
         before = mesh;
@@ -209,7 +227,7 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
                   ->capture_default_str();
   auto* feature = cmd->add_option("--feature-angle", args->options.feature_angle_deg,
                                   "Merge boundary runs straighter than this (degrees) into one segment");
-  cmd->add_option("--features", args->features, "File of interior edges to keep (vertex index pairs, 0-based)")
+  cmd->add_option("--features", args->features, "File of interior edges to keep (vertex index pairs, 0-based); OBJ polylines (l a b ...) in the input are kept too")
       ->type_name("FILE")
       ->check(CLI::ExistingFile);
   auto* keep = cmd->add_flag("--keep-vertices", args->options.keep_vertices, "Keep every input vertex; only remove obtuse angles");

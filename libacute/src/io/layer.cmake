@@ -6,6 +6,7 @@ acute_add_layer(io
     src/io/read_cgshop.cpp
     src/io/domain_io.cpp
     src/io/mesh_io.cpp
+    src/io/read_tagged_edges.cpp
     src/io/read_ply.cpp
     src/io/svg_canvas.cpp
     src/io/write_svg.cpp

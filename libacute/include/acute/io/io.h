@@ -6,6 +6,7 @@
 #include <acute/mesh/dual.h>
 #include <acute/mesh/mesh.h>
 
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -67,6 +68,18 @@ Domain domain_of_mesh(const Mesh& mesh);
 /// non-manifold edges or vertices, and mixed orientation (folds), naming the first bad element.
 /// An all-clockwise mesh is reversed and nonzero z dropped, with a warning. Vertices are Free.
 Mesh read_mesh(const std::string& path, const WarningSink& warn = {});
+
+/// An edge a mesh file tags: its vertices (0-based, as read_mesh numbers them) and its line.
+struct TaggedEdge {
+  std::array<int, 2> vertices{};
+  int line = 0;
+};
+
+/// The edges a mesh file tags: every consecutive pair of an OBJ polyline element (`l a b c ...`;
+/// `v/vt` and relative indices as in faces). Other formats tag none. Indices are checked against
+/// the file's vertices; whether a pair is an edge of the mesh is for the caller to check.
+/// 	hrows InvalidInput "path:line: problem", IoError when the file cannot be read.
+std::vector<TaggedEdge> read_tagged_edges(const std::string& path);
 
 struct WriteOptions {
   double min_angle_deg = 30.0;  ///< for SVG colouring
