@@ -31,7 +31,8 @@ if [ "$target" = regress ]; then
   bad=0
   for f in tests/fuzz/regressions/*; do
     t=$(basename "$f"); t=${t%%-*}
-    if "$dir/bin/$t" -timeout=10 "$f" >/dev/null 2>&1; then  # the runs' -timeout: a hang fails too echo "fixed   $(basename "$f")"; else echo "FAILING $(basename "$f")"; bad=$((bad + 1)); fi
+    # The runs' -timeout: an input that hangs fails here too.
+    if "$dir/bin/$t" -timeout=10 "$f" >/dev/null 2>&1; then echo "fixed   $(basename "$f")"; else echo "FAILING $(basename "$f")"; bad=$((bad + 1)); fi
   done
   exit $(( bad > 0 ))
 fi
