@@ -195,10 +195,22 @@ bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings) {
     }
   }
   // Rays inside each sector: alternately at the radii (even) and at their geometric midpoints (odd).
-  auto insert = [&](const Point2& q) {
-    for (auto fh : sub.vf_range(apex))
-      if (insert_point(sub, q, fh).is_valid()) return true;
+  // Each point is located from the faces of the one before (its neighbour on the ray or across the
+  // gap), then from the apex: walking from the apex every time crossed the whole fan, quadratic in
+  // its points where a wide sector beside a very narrow one gets thousands.
+  VertexHandle last;
+  auto insert_from = [&](const Point2& q, VertexHandle from) {
+    for (auto fh : sub.vf_range(from)) {
+      const VertexHandle vh = insert_point(sub, q, fh);
+      if (vh.is_valid()) {
+        last = vh;
+        return true;
+      }
+    }
     return false;
+  };
+  auto insert = [&](const Point2& q) {
+    return (last.is_valid() && !sub.status(last).deleted() && insert_from(q, last)) || insert_from(q, apex);
   };
   for (const FanSector& s : sectors) {
     const Point2 u0 = s.u0;
