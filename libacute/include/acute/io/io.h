@@ -78,7 +78,7 @@ struct TaggedEdge {
 /// The edges a mesh file tags: every consecutive pair of an OBJ polyline element (`l a b c ...`;
 /// `v/vt` and relative indices as in faces). Other formats tag none. Indices are checked against
 /// the file's vertices; whether a pair is an edge of the mesh is for the caller to check.
-/// 	hrows InvalidInput "path:line: problem", IoError when the file cannot be read.
+/// \throws InvalidInput "path:line: problem", IoError when the file cannot be read.
 std::vector<TaggedEdge> read_tagged_edges(const std::string& path);
 
 struct WriteOptions {
