@@ -6,12 +6,14 @@
 #include <acute/delaunay/cdt.h>
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/sectors.h>
+#include <acute/mesh/segments.h>
 #include <acute/ops/insert.h>
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <random>
@@ -187,6 +189,83 @@ Mesh with_interior_points(const Mesh& bmesh, const std::vector<Point2>& holes, c
   return m;
 }
 
+/// A constrained edge of the input CDT and the points that divide it, in order from a to b.
+struct Piece {
+  VertexHandle a, b;
+  int segment;
+  std::vector<Point2> cuts;
+};
+
+/// The samples' CDT in one build over every point: the input CDT's vertices, each piece a chain
+/// of constrained edges through its cuts, and the interior points. False when that build does not
+/// keep every point and every chain edge as one edge (a rounded cut on or across another feature,
+/// an interior point on a segment): the caller then inserts the points one by one, exactly.
+bool build_at_once(const Mesh& cdt, const std::vector<Point2>& holes, const std::vector<Piece>& pieces, const std::vector<Point2>& interior,
+                   const std::function<int(int)>& seg_marker, Mesh& out) {
+  Domain bd;
+  bd.name = "cvt samples";
+  bd.holes = holes;
+  const std::size_t ni = cdt.n_vertices();
+  bd.points.reserve(ni + interior.size());
+  for (auto vh : cdt.vertices()) bd.points.push_back(point2(cdt, vh));
+  std::vector<int> chain_piece;  // piece of every chain edge
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const Piece& piece = pieces[k];
+    int prev = piece.a.idx();
+    for (const Point2& p : piece.cuts) {
+      const int v = static_cast<int>(bd.points.size());
+      bd.points.push_back(p);
+      bd.segments.push_back({prev, v});
+      chain_piece.push_back(static_cast<int>(k));
+      prev = v;
+    }
+    bd.segments.push_back({prev, piece.b.idx()});
+    chain_piece.push_back(static_cast<int>(k));
+  }
+  const std::size_t nc = bd.points.size();
+  bd.points.insert(bd.points.end(), interior.begin(), interior.end());
+  try {
+    CdtStats cs;
+    out = build_cdt(bd, {}, &cs);
+    std::size_t constrained = 0;
+    for (auto eh : out.edges()) constrained += is_constrained(out, eh) ? 1 : 0;
+    if (out.n_vertices() != bd.points.size() || constrained != bd.segments.size() || cs.points_on_segments != 0 ||
+        cs.merged_duplicates != 0 || cs.crossings_split != 0)
+      return false;
+  } catch (const InvalidInput&) {
+    return false;
+  }
+  // build_cdt keeps the points' order: vertex i is bd.points[i].
+  std::vector<int> cut_piece(nc - ni, -1);
+  for (std::size_t k = 0; k < bd.segments.size(); ++k)
+    if (static_cast<std::size_t>(bd.segments[k][1]) >= ni) cut_piece[static_cast<std::size_t>(bd.segments[k][1]) - ni] = chain_piece[k];
+  for (auto vh : out.vertices()) {
+    const auto i = static_cast<std::size_t>(vh.idx());
+    auto& d = out.data(vh);
+    if (i < ni) {
+      d = cdt.data(vh);
+      d.kind = VertexKind::Input;
+    } else if (i < nc) {
+      const int s = pieces[static_cast<std::size_t>(cut_piece[i - ni])].segment;
+      d = {};
+      d.kind = VertexKind::OnSegment;
+      d.segment = s;
+      d.marker = seg_marker(s);
+      d.input_index = -1;
+    } else {
+      d = {};
+      d.kind = VertexKind::Free;
+    }
+  }
+  for (auto eh : out.edges()) {
+    auto& d = out.data(eh);
+    if (d.segment < 0) continue;
+    d.segment = pieces[static_cast<std::size_t>(chain_piece[static_cast<std::size_t>(d.segment)])].segment;
+    d.marker = seg_marker(d.segment);
+  }
+  return true;
+}
+
 }  // namespace
 
 Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field, const SamplingParams& params, SamplingStats* stats_out) {
@@ -207,17 +286,6 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
   auto seg_marker = [&](int s) {
     return static_cast<std::size_t>(s) < domain.segment_markers.size() ? domain.segment_markers[static_cast<std::size_t>(s)] : 0;
   };
-
-  // The boundary mesh: the input CDT with its constrained edges split in place (split_edge checks
-  // every new triangle exactly, so no point can land on the wrong side of a nearby feature).
-  Mesh mesh = cdt;
-  for (auto eh : cdt.edges())
-    if (cdt.data(eh).segment < 0 && edge_seg[static_cast<std::size_t>(eh.idx())] >= 0) {
-      mesh.data(eh).segment = edge_seg[static_cast<std::size_t>(eh.idx())];
-      mesh.data(eh).marker = 0;
-    }
-  set_segment_table(mesh, table);
-  for (auto vh : mesh.vertices()) mesh.data(vh).kind = VertexKind::Input;
 
   // Concentric shells: the first point on every constrained edge at a corner below 60 degrees is at
   // the same distance from the apex.
@@ -240,12 +308,9 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     }
   }
 
-  // Divide every constrained edge of the input CDT.
-  struct Piece {
-    VertexHandle a, b;
-    int segment;
-    std::vector<Point2> cuts;
-  };
+  // Divide every constrained edge of the input CDT. Each cut is put on its segment's line as
+  // split_edge would put it, and dropped (the piece left longer) where rounding leaves no double
+  // strictly between its neighbours near enough the line.
   std::vector<Piece> pieces;
   std::vector<double> cuts;
   for (auto eh : cdt.edges()) {
@@ -262,27 +327,22 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     divide(field, a, u, ra, len - rb, hint, cuts);
     if (rb > 0) cuts.push_back(len - rb);
     Piece piece{va, vb, s, {}};
-    // Interpolate from the nearer end for accuracy.
-    for (double c : cuts) piece.cuts.push_back(c <= 0.5 * len ? Point2(a + c * u) : Point2(b - (len - c) * u));
+    const auto& ends = table[static_cast<std::size_t>(s)];
+    Point2 prev = a;
+    for (double c : cuts) {
+      // Interpolate from the nearer end for accuracy.
+      const Point2 raw = c <= 0.5 * len ? Point2(a + c * u) : Point2(b - (len - c) * u);
+      const Point2 p = project_on_line(ends, raw, &prev, &b);
+      if (!strictly_between_along(ends, prev, p, b) || !close_enough_to_line(ends, p)) continue;
+      piece.cuts.push_back(p);
+      prev = p;
+    }
     pieces.push_back(std::move(piece));
   }
-  for (const Piece& piece : pieces) {
-    VertexHandle prev = piece.a;
-    for (const Point2& p : piece.cuts) {
-      const auto h = mesh.find_halfedge(prev, piece.b);
-      ACUTE_ASSERT(h.is_valid());
-      const VertexHandle vh = split_edge(mesh, mesh.edge_handle(h), p);
-      if (!vh.is_valid()) continue;  // would make a flat or inverted triangle: leave the piece longer
-      auto& d = mesh.data(vh);
-      d.kind = VertexKind::OnSegment;
-      d.segment = piece.segment;
-      d.marker = seg_marker(piece.segment);
-      d.input_index = -1;
-      prev = vh;
-      ++stats.boundary_samples;
-    }
-  }
 
+  // Interior points, over the faces of the input CDT (whose few large triangles the lattice walks
+  // in time linear in its points), away from the constrained edges of each face and its neighbours.
+  std::vector<Point2> interior;
   if (params.sample_interior) {
     std::mt19937 rng(params.seed);
     const double density = 2.0 / std::sqrt(3.0);
@@ -293,26 +353,25 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     };
     std::vector<Tri> stack;
     std::vector<std::pair<Point2, Point2>> near_segments;
-    std::vector<Point2> interior, candidates;
+    std::vector<Point2> candidates;
     std::optional<detail::NestedLattice> lattice;
     if (params.interior == InteriorSampling::Lattice) {
-      Point2 lo = point2(mesh, *mesh.vertices_begin()), hi = lo;
-      for (auto vh : mesh.vertices()) lo = lo.cwiseMin(point2(mesh, vh)), hi = hi.cwiseMax(point2(mesh, vh));
+      Point2 lo = point2(cdt, *cdt.vertices_begin()), hi = lo;
+      for (auto vh : cdt.vertices()) lo = lo.cwiseMin(point2(cdt, vh)), hi = hi.cwiseMax(point2(cdt, vh));
       lattice.emplace(field, lo, hi, params.seed);
     }
-    for (auto fh : mesh.faces()) {
-      const auto fp = face_points(mesh, fh);
+    for (auto fh : cdt.faces()) {
+      const auto fp = face_points(cdt, fh);
       near_segments.clear();
-      for (auto h : mesh.fh_range(fh)) {
+      for (auto h : cdt.fh_range(fh)) {
         const auto pushc = [&](HalfedgeHandle g) {
-          if (is_constrained(mesh, mesh.edge_handle(g)) || mesh.is_boundary(mesh.edge_handle(g)))
-            near_segments.emplace_back(point2(mesh, mesh.from_vertex_handle(g)), point2(mesh, mesh.to_vertex_handle(g)));
+          if (seg_of(g) >= 0) near_segments.emplace_back(point2(cdt, cdt.from_vertex_handle(g)), point2(cdt, cdt.to_vertex_handle(g)));
         };
         pushc(h);
-        const auto o = mesh.opposite_halfedge_handle(h);
-        if (!mesh.is_boundary(o)) {
-          pushc(mesh.next_halfedge_handle(o));
-          pushc(mesh.prev_halfedge_handle(o));
+        const auto o = cdt.opposite_halfedge_handle(h);
+        if (!cdt.is_boundary(o)) {
+          pushc(cdt.next_halfedge_handle(o));
+          pushc(cdt.prev_halfedge_handle(o));
         }
       }
       candidates.clear();
@@ -359,10 +418,44 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
       }
     }
     sort_morton(interior.begin(), interior.end());
-    if (!interior.empty()) mesh = with_interior_points(mesh, domain.holes, interior, stats);
   }
+  for (const Piece& piece : pieces) stats.boundary_samples += piece.cuts.size();
 
-  mesh = with_coherent_faces(mesh);
+  Mesh mesh;
+  if (build_at_once(cdt, domain.holes, pieces, interior, seg_marker, mesh)) {
+    stats.interior_samples = interior.size();
+  } else {
+    // One by one: the input CDT with its constrained edges split in place (split_edge checks every
+    // new triangle exactly, so no point can land on the wrong side of a nearby feature), then the
+    // interior points.
+    stats.boundary_samples = 0;
+    mesh = cdt;
+    for (auto eh : cdt.edges())
+      if (cdt.data(eh).segment < 0 && edge_seg[static_cast<std::size_t>(eh.idx())] >= 0) {
+        mesh.data(eh).segment = edge_seg[static_cast<std::size_t>(eh.idx())];
+        mesh.data(eh).marker = 0;
+      }
+    set_segment_table(mesh, table);
+    for (auto vh : mesh.vertices()) mesh.data(vh).kind = VertexKind::Input;
+    for (const Piece& piece : pieces) {
+      VertexHandle prev = piece.a;
+      for (const Point2& p : piece.cuts) {
+        const auto h = mesh.find_halfedge(prev, piece.b);
+        ACUTE_ASSERT(h.is_valid());
+        const VertexHandle vh = split_edge(mesh, mesh.edge_handle(h), p);
+        if (!vh.is_valid()) continue;  // would make a flat or inverted triangle: leave the piece longer
+        auto& d = mesh.data(vh);
+        d.kind = VertexKind::OnSegment;
+        d.segment = piece.segment;
+        d.marker = seg_marker(piece.segment);
+        d.input_index = -1;
+        prev = vh;
+        ++stats.boundary_samples;
+      }
+    }
+    if (!interior.empty()) mesh = with_interior_points(mesh, domain.holes, interior, stats);
+    mesh = with_coherent_faces(mesh);
+  }
   set_segment_table(mesh, std::move(table));
   if (stats_out) *stats_out = stats;
   return mesh;

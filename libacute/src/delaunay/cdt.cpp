@@ -6,6 +6,7 @@
 #include "delaunay/triangulation.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <numeric>
@@ -180,13 +181,25 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
       if (static_cast<std::size_t>(in) < domain.point_markers.size()) d.marker = domain.point_markers[static_cast<std::size_t>(in)];
     }
   }
-  std::vector<char> present(domain.segments.size(), 0);
+  // Faces in the order of their smallest vertex (each from that corner): with spatially ordered
+  // points the faces, edges and half-edges then lie in memory as the vertices do, which the
+  // whole-mesh sweeps of the optimiser and the repair walk coherently.
+  std::vector<std::pair<std::array<int, 3>, int>> order;  // (rotated corners, slot)
+  order.reserve(nf);
   for (int t = 0; t < slots; ++t) {
     if (!tr.alive(t) || removed[static_cast<std::size_t>(t)]) continue;
     const auto& tv = tr.tri(t).v;
+    const int m[3] = {vmap[static_cast<std::size_t>(tv[0])], vmap[static_cast<std::size_t>(tv[1])], vmap[static_cast<std::size_t>(tv[2])]};
+    const int r = m[0] < m[1] ? (m[0] < m[2] ? 0 : 2) : (m[1] < m[2] ? 1 : 2);
+    order.push_back({{m[r], m[(r + 1) % 3], m[(r + 2) % 3]}, t});
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<char> present(domain.segments.size(), 0);
+  for (const auto& [corners, t] : order) {
+    const auto& tv = tr.tri(t).v;
     const VertexHandle vh[3] = {VertexHandle(vmap[static_cast<std::size_t>(tv[0])]), VertexHandle(vmap[static_cast<std::size_t>(tv[1])]),
                                 VertexHandle(vmap[static_cast<std::size_t>(tv[2])])};
-    const FaceHandle fh = mesh.add_face(vh[0], vh[1], vh[2]);
+    const FaceHandle fh = mesh.add_face(VertexHandle(corners[0]), VertexHandle(corners[1]), VertexHandle(corners[2]));
     if (!fh.is_valid()) throw InternalError("build_cdt: OpenMesh refused triangle " + std::to_string(t));
     if (tr.segment(t, 0) < 0 && tr.segment(t, 1) < 0 && tr.segment(t, 2) < 0) continue;
     for (auto heh : mesh.fh_range(fh)) {

@@ -29,6 +29,17 @@ int mark_boundary_as_constrained(Mesh& mesh) {
   return n_segments;
 }
 
+bool collect_garbage(Mesh& mesh) {
+  auto any_deleted = [&](auto range) {
+    for (auto h : range)
+      if (mesh.status(h).deleted()) return true;
+    return false;
+  };
+  if (!any_deleted(mesh.all_vertices()) && !any_deleted(mesh.all_edges()) && !any_deleted(mesh.all_faces())) return false;
+  mesh.garbage_collection();
+  return true;
+}
+
 Mesh compacted(const Mesh& mesh) {
   Mesh out;
   out.reserve(mesh.n_vertices(), mesh.n_edges(), mesh.n_faces());

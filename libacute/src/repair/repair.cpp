@@ -91,11 +91,11 @@ class Repairer {
         break;
       }
       iterate(clusters, global, it);
-      mesh_.garbage_collection();
+      collect_garbage(mesh_);
       refresh_forced();
     }
     if (result_.status != RepairStatus::Converged && best_bad < SIZE_MAX && best.n_faces() > 0) mesh_ = std::move(best);
-    mesh_.garbage_collection();
+    collect_garbage(mesh_);
     result_.bad_after = bad_triangles(mesh_, bounds_).size();
     return result_;
   }
@@ -146,7 +146,7 @@ class Repairer {
       changed = true;
     }
     if (changed) {
-      mesh_.garbage_collection();
+      collect_garbage(mesh_);
       refresh_forced();
     }
   }

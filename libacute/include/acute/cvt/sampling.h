@@ -36,11 +36,12 @@ struct SamplingStats {
 /// corner below 60 degrees between constrained edges, the first point on every such edge is at the
 /// same distance from the apex (isosceles apex triangles). Interior points (Lattice): the vertices
 /// of an equilateral grid halved where h asks for it (spacing within sqrt(2) of h, exactly h where
-/// h is the field's largest; density 2/(sqrt(3) s^2)); (Random): each triangle of the boundary CDT
+/// h is the field's largest; density 2/(sqrt(3) s^2)); (Random): each triangle of the input CDT
 /// is cut recursively into four until it expects <= 1 point (density 2/(sqrt(3) h^2)), each piece
-/// then gets a point with that probability, uniformly placed. Points
-/// within sqrt(3)/4 h of a constrained edge or vertex of their triangle (or its neighbours) are dropped
-/// (this accounts for the boundary row).
+/// then gets a point with that probability, uniformly placed. Points within sqrt(3)/4 h of a
+/// constrained edge of their input triangle or its neighbours are dropped (this accounts for the
+/// boundary row). All points go into one CDT build (O(n log n)); where rounding puts a point on or
+/// across another feature, they are inserted one by one instead, exactly.
 /// Result: input points kind Input (input_index as in the domain), segment points OnSegment with
 /// data(vh).segment and data(eh).segment = ORIGINAL segment ids, interior points Free, the segment
 /// table holding the original segments. Convex-hull domains (domain.convex_hull): unconstrained
