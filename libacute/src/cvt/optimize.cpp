@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace acute {
 namespace {
@@ -58,6 +59,22 @@ class Optimizer {
   int num_vars() const { return num_vars_; }
   std::size_t num_movers() const { return movers_.size(); }
 
+  /// The movers whose last evaluated move |v - c_v| / h(v) exceeds `threshold`.
+  std::vector<VertexHandle> moving(double threshold) const {
+    std::vector<VertexHandle> out;
+    for (std::size_t k = 0; k < movers_.size(); ++k)
+      if (move_[k] > threshold) out.push_back(movers_[k].vh);
+    return out;
+  }
+
+  /// The rms move is taken as over `count` movers, the others still (an active set's complement).
+  void count_still_movers(std::size_t count) { rms_count_ = std::max(count, movers_.size()); }
+  /// Added to the energy reported (the frozen cells' part, for an active set).
+  void set_energy_offset(double offset) {
+    energy_ += offset - energy_offset_;
+    energy_offset_ = offset;
+  }
+
   /// Cells at the current positions: energy, gradient, max |v - c| / h.
   void evaluate() {
     if (local_) {
@@ -72,11 +89,13 @@ class Optimizer {
       std::sort(faces_.begin(), faces_.end());
     }
     compute_cells(mesh_, field_, cells_, ws_, local_ ? &faces_ : nullptr);
-    energy_ = cells_.energy;
+    energy_ = cells_.energy + energy_offset_;
     grad_.resize(num_vars_);
+    move_.resize(movers_.size());
     max_move_ = 0;
     double sum2 = 0;
-    for (const auto& m : movers_) {
+    for (std::size_t k = 0; k < movers_.size(); ++k) {
+      const Mover& m = movers_[k];
       const auto i = static_cast<std::size_t>(m.vh.idx());
       const double mass = cells_.mass[i];
       const Point2 g = -2.0 * cells_.shift[i];  // dF/dv = 2 m (v - c) (the cell boundary terms cancel)
@@ -86,15 +105,18 @@ class Optimizer {
         const double r = (mass > 0 ? std::abs(grad_[m.offset]) / (2.0 * mass * h) : 0.0);
         max_move_ = std::max(max_move_, r);
         sum2 += r * r;
+        move_[k] = r;
       } else {
         grad_[m.offset] = g.x();
         grad_[m.offset + 1] = g.y();
         const double r = (mass > 0 ? g.norm() / (2.0 * mass * h) : 0.0);
         max_move_ = std::max(max_move_, r);
         sum2 += r * r;
+        move_[k] = r;
       }
     }
-    rms_move_ = movers_.empty() ? 0.0 : std::sqrt(sum2 / static_cast<double>(movers_.size()));
+    const std::size_t count = std::max(rms_count_, movers_.size());
+    rms_move_ = count == 0 ? 0.0 : std::sqrt(sum2 / static_cast<double>(count));
   }
 
   void get_x(Eigen::VectorXd& x) const {
@@ -220,17 +242,59 @@ class Optimizer {
   std::vector<EdgeHandle> queue_;
   std::vector<VertexHandle> moved_;
   Eigen::VectorXd grad_;
+  std::vector<double> move_;  ///< per mover, at the last evaluation
+  std::size_t rms_count_ = 0;
+  double energy_offset_ = 0;
   double energy_ = 0, max_move_ = 0, rms_move_ = 0;
   std::size_t flips_ = 0, blocked_ = 0;
 };
 
 }  // namespace
 
+namespace {
+
+/// The given vertices and the `rings` rings of vertices around them.
+std::vector<VertexHandle> with_rings(const Mesh& mesh, std::vector<VertexHandle> seeds, int rings) {
+  std::vector<char> seen(mesh.n_vertices(), 0);
+  for (VertexHandle vh : seeds) seen[static_cast<std::size_t>(vh.idx())] = 1;
+  std::size_t begin = 0;
+  for (int r = 0; r < rings; ++r) {
+    const std::size_t end = seeds.size();
+    for (std::size_t i = begin; i < end; ++i)
+      for (auto w : mesh.vv_range(seeds[i]))
+        if (!seen[static_cast<std::size_t>(w.idx())]) {
+          seen[static_cast<std::size_t>(w.idx())] = 1;
+          seeds.push_back(w);
+        }
+    begin = end;
+  }
+  return seeds;
+}
+
+}  // namespace
+
 CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOptimizeParams& params) {
   CvtOptimizeResult res;
-  Optimizer opt(mesh, field, params);
-  opt.evaluate();
-  res.initial_energy = res.energy = opt.energy();
+  std::optional<Optimizer> whole(std::in_place, mesh, field, params);
+  whole->evaluate();
+  res.initial_energy = whole->energy();
+  std::optional<Optimizer> part;
+  if (params.active_move > 0 && params.subset.empty()) {
+    CvtOptimizeParams local = params;
+    local.subset = with_rings(mesh, whole->moving(params.active_move), 2);
+    if (!local.subset.empty() && local.subset.size() * 2 <= whole->num_movers()) {
+      res.active = local.subset.size();
+      const std::size_t count = whole->num_movers();
+      const double total = whole->energy();
+      whole.reset();
+      part.emplace(mesh, field, local);
+      part->count_still_movers(count);
+      part->evaluate();
+      part->set_energy_offset(total - part->energy());
+    }
+  }
+  Optimizer& opt = part ? *part : *whole;
+  res.energy = opt.energy();
   res.gradient_norm = opt.gradient().norm();
   res.max_move = opt.max_move();
   res.rms_move = opt.rms_move();
@@ -390,6 +454,7 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   op.lloyd_iterations = params.lloyd_iterations;
   op.lbfgs_iterations = params.lbfgs_iterations;
   op.move_tolerance = params.move_tolerance;
+  op.active_move = params.active_move;
   if (params.time_limit_s > 0) {
     const double left = params.time_limit_s - elapsed();
     if (left <= 0) {

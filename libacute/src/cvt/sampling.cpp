@@ -428,6 +428,7 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     // One by one: the input CDT with its constrained edges split in place (split_edge checks every
     // new triangle exactly, so no point can land on the wrong side of a nearby feature), then the
     // interior points.
+    stats.inserted_one_by_one = true;
     stats.boundary_samples = 0;
     mesh = cdt;
     for (auto eh : cdt.edges())

@@ -128,6 +128,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
         cp.lbfgs_iterations = 40;
         cp.lfs_factor = 0.7;  // room for interior vertices in strips between input points
         cp.move_tolerance = 3e-3;
+        cp.active_move = 1e-3;  // the lattice away from its boundary rows and seams is centroidal already
       }
       if (options.observer)
         cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy, p.gradient_norm, p.phase}); };

@@ -44,6 +44,11 @@ struct CvtOptimizeParams {
   /// subset, the energy is taken over the faces around it only (local smoothing).
   std::vector<VertexHandle> subset;
   double time_limit_s = 0;         ///< > 0: stop after this many seconds (not converged)
+  /// > 0 (whole-mesh runs only): after the first evaluation, only the vertices whose move
+  /// |v - c_v| / h(v) exceeds this, and two rings around them, are optimised, when they are at
+  /// most half the movers (a lattice start is centroidal already away from its boundary rows and
+  /// level seams). The others keep moves below this; the rms test counts them as still.
+  double active_move = 0;
   std::function<void(const CvtProgress&)> observer;
 };
 
@@ -57,6 +62,7 @@ struct CvtOptimizeResult {
   double max_move = 0;
   double rms_move = 0;
   bool converged = false;         ///< a tolerance was met (not the iteration cap)
+  std::size_t active = 0;         ///< vertices optimised after the first evaluation (active_move)
 };
 
 /// Optimises the vertex positions of a constrained Delaunay mesh (segment table set when it has
@@ -78,6 +84,7 @@ struct CvtParams {
   int lloyd_iterations = 10;
   int lbfgs_iterations = 200;
   double move_tolerance = 1e-3;     ///< rms |v - c_v| / h(v) to stop at
+  double active_move = 0;           ///< CvtOptimizeParams::active_move (0: every vertex throughout)
   unsigned seed = 1;
   InteriorSampling interior = InteriorSampling::Lattice;  ///< the seeds of the interior
   /// > 0: the whole CVT start (size field, sampling, optimisation) stops after this many seconds:

@@ -28,6 +28,7 @@ struct SamplingStats {
   std::size_t boundary_samples = 0;  ///< new points on segments
   std::size_t interior_samples = 0;
   std::size_t small_angle_apices = 0;  ///< input points with a corner below 60 degrees (concentric shells)
+  bool inserted_one_by_one = false;    ///< the one CDT build of every sample failed its checks (exact fallback)
 };
 
 /// Samples the domain of `input_cdt` (= build_cdt(domain)) and returns the CDT of the samples.
