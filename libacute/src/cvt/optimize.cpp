@@ -251,28 +251,6 @@ class Optimizer {
 
 }  // namespace
 
-namespace {
-
-/// The given vertices and the `rings` rings of vertices around them.
-std::vector<VertexHandle> with_rings(const Mesh& mesh, std::vector<VertexHandle> seeds, int rings) {
-  std::vector<char> seen(mesh.n_vertices(), 0);
-  for (VertexHandle vh : seeds) seen[static_cast<std::size_t>(vh.idx())] = 1;
-  std::size_t begin = 0;
-  for (int r = 0; r < rings; ++r) {
-    const std::size_t end = seeds.size();
-    for (std::size_t i = begin; i < end; ++i)
-      for (auto w : mesh.vv_range(seeds[i]))
-        if (!seen[static_cast<std::size_t>(w.idx())]) {
-          seen[static_cast<std::size_t>(w.idx())] = 1;
-          seeds.push_back(w);
-        }
-    begin = end;
-  }
-  return seeds;
-}
-
-}  // namespace
-
 CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOptimizeParams& params) {
   CvtOptimizeResult res;
   std::optional<Optimizer> whole(std::in_place, mesh, field, params);
@@ -281,7 +259,8 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
   std::optional<Optimizer> part;
   if (params.active_move > 0 && params.subset.empty()) {
     CvtOptimizeParams local = params;
-    local.subset = with_rings(mesh, whole->moving(params.active_move), 2);
+    std::vector<char> seen;
+    local.subset = with_rings(mesh, whole->moving(params.active_move), 2, seen);
     if (!local.subset.empty() && local.subset.size() * 2 <= whole->num_movers()) {
       res.active = local.subset.size();
       const std::size_t count = whole->num_movers();

@@ -29,6 +29,24 @@ int mark_boundary_as_constrained(Mesh& mesh) {
   return n_segments;
 }
 
+std::vector<VertexHandle> with_rings(const Mesh& mesh, std::vector<VertexHandle> seeds, int rings, std::vector<char>& seen) {
+  if (seen.size() < mesh.n_vertices()) seen.resize(mesh.n_vertices(), 0);
+  for (VertexHandle vh : seeds) seen[static_cast<std::size_t>(vh.idx())] = 1;
+  std::size_t begin = 0;
+  for (int r = 0; r < rings; ++r) {
+    const std::size_t end = seeds.size();
+    for (std::size_t i = begin; i < end; ++i)
+      for (auto w : mesh.vv_range(seeds[i]))
+        if (!seen[static_cast<std::size_t>(w.idx())]) {
+          seen[static_cast<std::size_t>(w.idx())] = 1;
+          seeds.push_back(w);
+        }
+    begin = end;
+  }
+  for (VertexHandle vh : seeds) seen[static_cast<std::size_t>(vh.idx())] = 0;
+  return seeds;
+}
+
 bool collect_garbage(Mesh& mesh) {
   auto any_deleted = [&](auto range) {
     for (auto h : range)

@@ -182,24 +182,8 @@ class Repairer {
 
   /// The vertices of the given ones and their neighbours (1-ring), deduplicated.
   std::vector<VertexHandle> grow(const std::vector<VertexHandle>& seeds, int rings) {
-    std::vector<VertexHandle> out = seeds;
-    // Marks kept between calls and cleared entry by entry: no allocation of the mesh's size per cluster.
-    std::vector<char>& seen = seen_;
-    if (seen.size() < mesh_.n_vertices()) seen.resize(mesh_.n_vertices(), 0);
-    for (auto vh : seeds) seen[static_cast<std::size_t>(vh.idx())] = 1;
-    std::size_t begin = 0;
-    for (int r = 0; r < rings; ++r) {
-      const std::size_t end = out.size();
-      for (std::size_t i = begin; i < end; ++i)
-        for (auto w : mesh_.vv_range(out[i]))
-          if (!seen[static_cast<std::size_t>(w.idx())]) {
-            seen[static_cast<std::size_t>(w.idx())] = 1;
-            out.push_back(w);
-          }
-      begin = end;
-    }
-    for (auto vh : out) seen[static_cast<std::size_t>(vh.idx())] = 0;
-    return out;
+    // Marks kept between calls: no allocation of the mesh's size per cluster.
+    return with_rings(mesh_, seeds, rings, seen_);
   }
 
   void iterate(const std::vector<Cluster>& clusters, bool global, int it) {

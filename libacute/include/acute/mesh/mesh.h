@@ -119,6 +119,11 @@ void to_openmesh(const Mesh& in, UserMesh& out) {
 /// boundary edges.
 int mark_boundary_as_constrained(Mesh& mesh);
 
+/// The seeds and the `rings` rings of vertices around them, each once (seeds first). `seen`:
+/// marks indexed by vertex, all zero on entry and on return (grown to the mesh's size if needed),
+/// so that callers repeating this keep one buffer instead of allocating one per call.
+std::vector<VertexHandle> with_rings(const Mesh& mesh, std::vector<VertexHandle> seeds, int rings, std::vector<char>& seen);
+
 /// mesh.garbage_collection() when an element is marked deleted (true then); a no-op otherwise.
 /// OpenMesh's collection rebuilds every array even when nothing is deleted (0.2 s per million
 /// triangles); the check is a scan of the status flags.
