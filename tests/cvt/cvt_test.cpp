@@ -3,6 +3,7 @@
 
 #include <acute/cvt/cvt.h>
 #include <acute/delaunay/cdt.h>
+#include <acute/io/io.h>
 #include <acute/mesh/check.h>
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/quality.h>
@@ -137,6 +138,26 @@ TEST(Sampling, every_sample_goes_into_one_cdt_build) {
     }
     EXPECT_TRUE(ordered) << d.name;
   }
+}
+
+TEST(Sampling, a_tiny_notch_on_a_long_wall_gets_its_fine_samples) {
+  // tests/data/regressions/tiny_notch_star_at_1e8.poly (stress seed 132): the notch's tip is input
+  // point 16; lattice cells overlapping the slivers there have their centroids outside the domain.
+  const Domain d = io::read_poly(std::string(ACUTE_TEST_DATA_DIR) + "/regressions/tiny_notch_star_at_1e8.poly");
+  const Point2 tip = d.points[15];
+  const Mesh cdt = build_cdt(d);
+  SizeFieldParams sp;
+  sp.target_vertices = 300;
+  sp.graded = true;
+  const SizeField field = make_size_field(cdt, sp);
+  const double h = field(tip);
+  ASSERT_LT(h, 1e3) << "the graded field resolves the notch (its sides are 112 long)";
+  const Mesh mesh = sample_domain(d, cdt, field, {});
+  int interior_near = 0;
+  for (auto vh : mesh.vertices())
+    interior_near += mesh.data(vh).kind == VertexKind::Free && (point2(mesh, vh) - tip).norm() < 10 * h;
+  EXPECT_GE(interior_near, 10) << "interior samples within 10 h of the notch (h = " << h << ")";
+  expect_constraints_kept(mesh, d);
 }
 
 TEST(Sampling, random_interior_is_still_available) {

@@ -1,5 +1,6 @@
 #include "cvt/lattice.h"
 
+#include <acute/mesh/geometry.h>
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
@@ -13,6 +14,11 @@ constexpr double kRowHeight = 0.86602540378443864676;  // sqrt(3) / 2
 constexpr double kSqrt2 = 1.41421356237309504880;
 
 /// Separating-axis test of two triangles (either orientation); touching counts as overlapping.
+/// Twice the signed area of abc in floating point: a sampling choice, not a topological decision.
+double orient_value(const Point2& a, const Point2& b, const Point2& c) {
+  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
 bool overlaps(const Point2 (&p)[3], const Point2 (&q)[3]) {
   auto separated_by_edges_of = [](const Point2 (&s)[3], const Point2 (&t)[3]) {
     for (int e = 0; e < 3; ++e) {
@@ -28,6 +34,22 @@ bool overlaps(const Point2 (&p)[3], const Point2 (&q)[3]) {
     return false;
   };
   return !separated_by_edges_of(p, q) && !separated_by_edges_of(q, p);
+}
+
+/// The point of triangle p nearest to c (c itself when inside). A cell that overlaps the triangle
+/// near a small feature may have its centroid outside the domain, where the size field holds no
+/// meaning (a clamped walk gives some far triangle's value): a tiny notch on a long wall then never
+/// got its fine cells. Inside the domain the field is graded, so the nearest point speaks for the cell.
+Point2 nearest_in_triangle(const Point2 (&p)[3], const Point2& c) {
+  const double s0 = orient_value(p[0], p[1], c), s1 = orient_value(p[1], p[2], c), s2 = orient_value(p[2], p[0], c);
+  const bool ccw = orient_value(p[0], p[1], p[2]) >= 0;
+  if (ccw ? (s0 >= 0 && s1 >= 0 && s2 >= 0) : (s0 <= 0 && s1 <= 0 && s2 <= 0)) return c;
+  Point2 best = nearest_on_segment(c, p[0], p[1]);
+  for (int e = 1; e < 3; ++e) {
+    const Point2 q = nearest_on_segment(c, p[e], p[(e + 1) % 3]);
+    if ((q - c).squaredNorm() < (best - c).squaredNorm()) best = q;
+  }
+  return best;
 }
 
 }  // namespace
@@ -96,7 +118,7 @@ void NestedLattice::points_in_triangle(const Point2& a, const Point2& b, const P
     if (!overlaps(tri, q)) continue;
     if (cell.level > 0) {
       const double spacing = fine_ * static_cast<double>(std::int64_t{1} << cell.level);
-      if (field_.eval((q[0] + q[1] + q[2]) / 3.0, hint) < spacing / kSqrt2) {
+      if (field_.eval(nearest_in_triangle(tri, (q[0] + q[1] + q[2]) / 3.0), hint) < spacing / kSqrt2) {
         const Key m01 = mid(cell.v[0], cell.v[1]), m12 = mid(cell.v[1], cell.v[2]), m20 = mid(cell.v[2], cell.v[0]);
         const int l = cell.level - 1;
         stack_.push_back({{cell.v[0], m01, m20}, l});
