@@ -93,6 +93,36 @@ TEST(Sampling, small_angle_apex_triangle_is_isosceles) {
   }
 }
 
+TEST(Sampling, a_narrow_sector_is_a_strip_graded_to_its_width) {
+  // A 5-degree needle: its walls share the apex, so the local feature size alone never sees one
+  // from the other and the start filled the strip one sliver wide (la.poly's 4-degree hub).
+  const double theta = 5.0 * 3.14159265358979323846 / 180.0;
+  const Domain d = test::polygon_domain({{0, 0}, {10, 0}, {10 * std::cos(theta), 10 * std::sin(theta)}}, "needle_5deg");
+  const Mesh cdt = build_cdt(d);
+  SizeFieldParams sp;
+  sp.target_vertices = 500;
+  sp.graded = true;
+  const SizeField field = make_size_field(cdt, sp);
+  for (double r : {4.0, 6.0, 8.0}) {
+    const Point2 on_bisector = r * Point2(std::cos(0.5 * theta), std::sin(0.5 * theta));
+    EXPECT_LE(field(on_bisector), 1.2 * r * std::sin(theta)) << "the size at r = " << r << " is about the strip's width";
+  }
+  const Mesh mesh = sample_domain(d, cdt, field, {});
+  // The first cuts of both walls are at a third of the shorter wall (both are 10 long): an
+  // isosceles apex triangle where no interior sample falls inside it.
+  std::vector<double> radii;
+  for (auto w : mesh.vv_range(mesh.vertex_handle(0)))
+    if (mesh.data(w).kind == VertexKind::OnSegment) radii.push_back((point2(mesh, w) - Point2(0, 0)).norm());
+  ASSERT_EQ(radii.size(), 2u);
+  EXPECT_NEAR(radii[0], 10.0 / 3.0, 1e-12);
+  EXPECT_NEAR(radii[1], 10.0 / 3.0, 1e-12);
+  // Beyond it, the walls are cut at about the strip's width: no sliver a wall step long.
+  int on_walls = 0;
+  for (auto vh : mesh.vertices()) on_walls += mesh.data(vh).kind == VertexKind::OnSegment && (point2(mesh, vh) - Point2(0, 0)).norm() < 9.0;
+  EXPECT_GE(on_walls, 2 * static_cast<int>(std::log(9.0 / (10.0 / 3.0)) / std::log(1.0 + 1.5 * std::sin(theta))));
+  expect_constraints_kept(mesh, d);
+}
+
 TEST(Sampling, uniform_field_gives_a_hexagonal_interior) {
   // Away from the boundary rows, every sample has six neighbours at exactly the spacing: the
   // lattice start is a centroidal Voronoi tessellation there already.

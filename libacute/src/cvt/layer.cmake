@@ -2,6 +2,7 @@ acute_add_layer(cvt
   SOURCES
     src/cvt/size_field.cpp
     src/cvt/lattice.cpp
+    src/cvt/narrow_sectors.cpp
     src/cvt/sampling.cpp
     src/cvt/site_delaunay.cpp
     src/cvt/voronoi.cpp

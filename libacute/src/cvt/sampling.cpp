@@ -1,6 +1,7 @@
 #include <acute/cvt/sampling.h>
 
 #include "cvt/lattice.h"
+#include "cvt/narrow_sectors.h"
 
 #include <acute/core/errors.h>
 #include <acute/delaunay/cdt.h>
@@ -289,7 +290,7 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
 
   // Concentric shells: the first point on every constrained edge at a corner below 60 degrees is at
   // the same distance from the apex.
-  std::vector<double> shell(cdt.n_vertices(), 0.0);
+  std::vector<double> shell(cdt.n_vertices(), 0.0), strip_shell(cdt.n_vertices(), 0.0);
   const WallTest is_wall = [&](HalfedgeHandle h) { return seg_of(h) >= 0; };
   int hint = -1;
   for (auto vh : cdt.vertices()) {
@@ -305,8 +306,15 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     if (sharp) {
       ++stats.small_angle_apices;
       shell[static_cast<std::size_t>(vh.idx())] = std::min(field.eval(v, hint), shortest / 3.0);
+      strip_shell[static_cast<std::size_t>(vh.idx())] = detail::strip_apex_radius(cdt, vh);
     }
   }
+  // The first cut from `out`'s vertex: on the walls of a strip sector at the apex triangle's radius
+  // (the size field's strip samples start there), elsewhere at the shell.
+  auto first_cut = [&](HalfedgeHandle out) {
+    const auto i = static_cast<std::size_t>(cdt.from_vertex_handle(out).idx());
+    return strip_shell[i] > 0 && detail::bounds_strip_sector(cdt, out) ? strip_shell[i] : shell[i];
+  };
 
   // Divide every constrained edge of the input CDT. Each cut is put on its segment's line as
   // split_edge would put it, and dropped (the piece left longer) where rounding leaves no double
@@ -321,7 +329,7 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     const Point2 a = point2(cdt, va), b = point2(cdt, vb);
     const double len = (b - a).norm();
     const Point2 u = (b - a) / len;
-    const double ra = shell[static_cast<std::size_t>(va.idx())], rb = shell[static_cast<std::size_t>(vb.idx())];
+    const double ra = first_cut(h), rb = first_cut(cdt.opposite_halfedge_handle(h));
     cuts.clear();
     if (ra > 0) cuts.push_back(ra);
     divide(field, a, u, ra, len - rb, hint, cuts);

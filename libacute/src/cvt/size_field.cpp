@@ -5,6 +5,8 @@
 #include <acute/mesh/geometry.h>
 #include <acute/predicates/predicates.h>
 
+#include "cvt/narrow_sectors.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -473,6 +475,8 @@ LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap) {
       t += step(d);
     }
   }
+  // Narrow sectors: their two walls share the apex, so neither sees the other above.
+  detail::append_strip_samples(cdt, out.points, out.lfs);
   // Samples at one point (a vertex's foot on another input vertex, beside that vertex's own
   // sample) keep the smallest value: the field's triangulation keeps one of them, and were it the
   // large one, a feature shorter than the spacing would vanish from the field.
