@@ -39,16 +39,18 @@ bool bounds_strip_sector(const Mesh& mesh, HalfedgeHandle out) {
   return false;
 }
 
-double strip_apex_radius(const Mesh& mesh, VertexHandle vh) {
-  bool strip = false;
+StripApex strip_apex(const Mesh& mesh, VertexHandle vh) {
+  StripApex out;
   double shortest = std::numeric_limits<double>::infinity();
   const Point2 v = point2(mesh, vh);
   for (auto h : mesh.voh_range(vh)) {
     if (!is_wall_edge(mesh, mesh.edge_handle(h))) continue;
     shortest = std::min(shortest, (point2(mesh, mesh.to_vertex_handle(h)) - v).norm());
-    strip = strip || strip_sector_from(mesh, h).end.is_valid();
+    const SectorSweep s = strip_sector_from(mesh, h);
+    if (s.end.is_valid() && (out.narrowest == 0 || s.radians < out.narrowest)) out.narrowest = s.radians;
   }
-  return strip ? shortest / 3.0 : 0.0;
+  if (out.narrowest > 0) out.reach = shortest / 3.0;
+  return out;
 }
 
 void append_strip_samples(const Mesh& mesh, std::vector<Point2>& points, std::vector<double>& values, int max_per_wall) {
@@ -60,7 +62,7 @@ void append_strip_samples(const Mesh& mesh, std::vector<Point2>& points, std::ve
       if (!is_wall_edge(mesh, mesh.edge_handle(out))) continue;
       const SectorSweep s = strip_sector_from(mesh, out);
       if (!s.end.is_valid()) continue;
-      if (r0 < 0) r0 = strip_apex_radius(mesh, vh);
+      if (r0 < 0) r0 = strip_apex(mesh, vh).reach;
       const Point2 a = point2(mesh, mesh.to_vertex_handle(out)), b = point2(mesh, mesh.to_vertex_handle(s.end));
       const double la = (a - v).norm(), lb = (b - v).norm(), reach = std::min(la, lb);
       if (!(r0 > 0) || !(reach > r0)) continue;

@@ -20,15 +20,20 @@ constexpr double kStripSector = 3.14159265358979323846 / 6.0;
 /// The walls of a mesh: constrained edges and boundary edges.
 bool is_wall_edge(const Mesh& mesh, EdgeHandle eh);
 
-/// The radius of the apex triangle of a vertex with a strip sector: a third of its shortest wall
-/// (the first cut of every wall at a sharp corner is at least that far in); 0 when vh has none.
-double strip_apex_radius(const Mesh& mesh, VertexHandle vh);
+/// The apex of strip sectors: the narrowest of them (radians; 0 when vh has none) and how far the
+/// size field's strip samples start from it, a third of its shortest wall. The apex triangle reaches
+/// at most that far (less where the size is finer than the strip there: sample_domain).
+struct StripApex {
+  double narrowest = 0;
+  double reach = 0;
+};
+StripApex strip_apex(const Mesh& mesh, VertexHandle vh);
 
 /// Whether the wall spoke `out` (a halfedge leaving its vertex) bounds a strip sector on either side.
 bool bounds_strip_sector(const Mesh& mesh, HalfedgeHandle out);
 
 /// Size samples along both walls of every strip sector of `mesh` (an input CDT, faces only inside
-/// the domain): at radii r0 (strip_apex_radius), r0 (1 + sin theta), ... up to the shorter wall's
+/// the domain): at radii r0 (StripApex::reach), r0 (1 + sin theta), ... up to the shorter wall's
 /// length, the distance to the other wall. At most max_per_wall samples per wall (a needle sector
 /// of 0.1 degree would need thousands): the step grows to fit.
 void append_strip_samples(const Mesh& mesh, std::vector<Point2>& points, std::vector<double>& values, int max_per_wall = 2048);
