@@ -124,6 +124,21 @@ Mesh with_coherent_faces(const Mesh& in) {
   return out;
 }
 
+/// build_cdt of the samples, true when it kept every point and every segment as one edge (no
+/// point merged or found on a segment, no crossing split): the fast path of the sampler.
+bool build_keeping_everything(const Domain& bd, Mesh& out) {
+  try {
+    CdtStats cs;
+    out = build_cdt(bd, {}, &cs);
+    std::size_t constrained = 0;
+    for (auto eh : out.edges()) constrained += is_constrained(out, eh) ? 1 : 0;
+    return out.n_vertices() == bd.points.size() && constrained == bd.segments.size() && cs.points_on_segments == 0 &&
+           cs.merged_duplicates == 0 && cs.crossings_split == 0;
+  } catch (const InvalidInput&) {
+    return false;
+  }
+}
+
 /// The boundary mesh with the interior points added: one build_cdt over all the points and the
 /// constrained edges (fast), accepted when it keeps every point and every constrained edge as
 /// one edge; otherwise the points are inserted one by one (exact, slower).
@@ -143,18 +158,7 @@ Mesh with_interior_points(const Mesh& bmesh, const std::vector<Point2>& holes, c
     seg_edge.push_back(eh);
   }
   Mesh m;
-  bool ok = false;
-  try {
-    CdtStats cs;
-    m = build_cdt(bd, {}, &cs);
-    std::size_t constrained = 0;
-    for (auto eh : m.edges()) constrained += is_constrained(m, eh) ? 1 : 0;
-    ok = m.n_vertices() == bd.points.size() && constrained == bd.segments.size() && cs.points_on_segments == 0 &&
-         cs.merged_duplicates == 0 && cs.crossings_split == 0;
-  } catch (const InvalidInput&) {
-    ok = false;
-  }
-  if (ok) {
+  if (build_keeping_everything(bd, m)) {
     for (auto vh : m.vertices()) {
       auto& d = m.data(vh);
       const auto i = static_cast<std::size_t>(d.input_index);
@@ -225,17 +229,7 @@ bool build_at_once(const Mesh& cdt, const std::vector<Point2>& holes, const std:
   }
   const std::size_t nc = bd.points.size();
   bd.points.insert(bd.points.end(), interior.begin(), interior.end());
-  try {
-    CdtStats cs;
-    out = build_cdt(bd, {}, &cs);
-    std::size_t constrained = 0;
-    for (auto eh : out.edges()) constrained += is_constrained(out, eh) ? 1 : 0;
-    if (out.n_vertices() != bd.points.size() || constrained != bd.segments.size() || cs.points_on_segments != 0 ||
-        cs.merged_duplicates != 0 || cs.crossings_split != 0)
-      return false;
-  } catch (const InvalidInput&) {
-    return false;
-  }
+  if (!build_keeping_everything(bd, out)) return false;
   // build_cdt keeps the points' order: vertex i is bd.points[i].
   std::vector<int> cut_piece(nc - ni, -1);
   for (std::size_t k = 0; k < bd.segments.size(); ++k)
