@@ -13,12 +13,12 @@ namespace {
 constexpr double kRowHeight = 0.86602540378443864676;  // sqrt(3) / 2
 constexpr double kSqrt2 = 1.41421356237309504880;
 
-/// Separating-axis test of two triangles (either orientation); touching counts as overlapping.
 /// Twice the signed area of abc in floating point: a sampling choice, not a topological decision.
 double orient_value(const Point2& a, const Point2& b, const Point2& c) {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
 }
 
+/// Separating-axis test of two triangles (either orientation); touching counts as overlapping.
 bool overlaps(const Point2 (&p)[3], const Point2 (&q)[3]) {
   auto separated_by_edges_of = [](const Point2 (&s)[3], const Point2 (&t)[3]) {
     for (int e = 0; e < 3; ++e) {

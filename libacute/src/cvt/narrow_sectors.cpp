@@ -16,7 +16,7 @@ constexpr int kSweepBudget = 100000;
 /// The strip sector starting counter-clockwise at wall spoke `out`, or an invalid end halfedge.
 SectorSweep strip_sector_from(const Mesh& mesh, HalfedgeHandle out) {
   if (mesh.is_boundary(out)) return SectorSweep();
-  const WallTest wall = [&](HalfedgeHandle h) { return is_wall_edge(mesh, mesh.edge_handle(h)); };
+  const WallTest wall = [&](HalfedgeHandle h) { return is_segment_or_boundary(mesh, h); };
   SectorSweep s = sweep_sector(mesh, out, wall, kSweepBudget);
   if (s.how != SectorEnd::Wall || !(s.radians < kStripSector)) return SectorSweep();
   return s;
@@ -24,15 +24,13 @@ SectorSweep strip_sector_from(const Mesh& mesh, HalfedgeHandle out) {
 
 }  // namespace
 
-bool is_wall_edge(const Mesh& mesh, EdgeHandle eh) { return is_constrained(mesh, eh) || mesh.is_boundary(eh); }
-
 bool bounds_strip_sector(const Mesh& mesh, HalfedgeHandle out) {
-  if (!is_wall_edge(mesh, mesh.edge_handle(out))) return false;
+  if (!is_segment_or_boundary(mesh, out)) return false;
   if (strip_sector_from(mesh, out).end.is_valid()) return true;
   // The sector clockwise from `out`: the one that ends at it.
   const VertexHandle v = mesh.from_vertex_handle(out);
   for (auto h : mesh.voh_range(v)) {
-    if (h == out || !is_wall_edge(mesh, mesh.edge_handle(h))) continue;
+    if (h == out || !is_segment_or_boundary(mesh, h)) continue;
     const SectorSweep s = strip_sector_from(mesh, h);
     if (s.end == out) return true;
   }
@@ -44,7 +42,7 @@ StripApex strip_apex(const Mesh& mesh, VertexHandle vh) {
   double shortest = std::numeric_limits<double>::infinity();
   const Point2 v = point2(mesh, vh);
   for (auto h : mesh.voh_range(vh)) {
-    if (!is_wall_edge(mesh, mesh.edge_handle(h))) continue;
+    if (!is_segment_or_boundary(mesh, h)) continue;
     shortest = std::min(shortest, (point2(mesh, mesh.to_vertex_handle(h)) - v).norm());
     const SectorSweep s = strip_sector_from(mesh, h);
     if (s.end.is_valid() && (out.narrowest == 0 || s.radians < out.narrowest)) out.narrowest = s.radians;
@@ -59,7 +57,7 @@ void append_strip_samples(const Mesh& mesh, std::vector<Point2>& points, std::ve
     double r0 = -1;  // computed at the first strip sector of vh
     const Point2 v = point2(mesh, vh);
     for (auto out : mesh.voh_range(vh)) {
-      if (!is_wall_edge(mesh, mesh.edge_handle(out))) continue;
+      if (!is_segment_or_boundary(mesh, out)) continue;
       const SectorSweep s = strip_sector_from(mesh, out);
       if (!s.end.is_valid()) continue;
       if (r0 < 0) r0 = strip_apex(mesh, vh).reach;

@@ -14,11 +14,9 @@
 
 namespace acute::detail {
 
-/// Sectors narrower than this (radians) are strips.
+/// Sectors narrower than this (radians) are strips. Walls: constrained and boundary edges
+/// (is_segment_or_boundary).
 constexpr double kStripSector = 3.14159265358979323846 / 6.0;
-
-/// The walls of a mesh: constrained edges and boundary edges.
-bool is_wall_edge(const Mesh& mesh, EdgeHandle eh);
 
 /// The apex of strip sectors: the narrowest of them (radians; 0 when vh has none) and how far the
 /// size field's strip samples start from it, a third of its shortest wall. The apex triangle reaches
