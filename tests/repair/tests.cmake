@@ -1,6 +1,7 @@
 acute_add_test(repair_tests
   SOURCES
     repair/angle_bounds_test.cpp
+    repair/hub_ring_test.cpp
     repair/joint_relaxation_test.cpp
     repair/local_remesh_test.cpp
     repair/non_obtuse_test.cpp

@@ -115,4 +115,23 @@ bool is_bad_triangle(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds,
   return triangle_margin(mesh, fh, bounds, exempt) < bounds.margin_deg;
 }
 
+bool closes_strip_apex(const Mesh& mesh, VertexHandle vh, const std::vector<bool>& forced) {
+  if (mesh.data(vh).kind != VertexKind::OnSegment) return false;
+  auto is_forced = [&](VertexHandle v) {
+    const auto i = static_cast<std::size_t>(v.idx());
+    return i < forced.size() && forced[i];
+  };
+  for (auto spoke : mesh.voh_range(vh)) {
+    const VertexHandle apex = mesh.to_vertex_handle(spoke);
+    if (!is_input(mesh, apex) || !is_forced(apex) || !is_segment_or_boundary(mesh, spoke)) continue;
+    for (HalfedgeHandle side : {spoke, mesh.opposite_halfedge_handle(spoke)}) {
+      if (mesh.is_boundary(side)) continue;
+      // The triangle's edge at the apex other than (apex, vh).
+      const HalfedgeHandle other = side == spoke ? mesh.next_halfedge_handle(side) : mesh.prev_halfedge_handle(side);
+      if (is_segment_or_boundary(mesh, other)) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace acute

@@ -3,6 +3,7 @@ acute_add_layer(repair
     src/repair/angle_bounds.cpp
     src/repair/clusters.cpp
     src/repair/exact_triangulation.cpp
+    src/repair/hub_ring.cpp
     src/repair/joint_relaxation.cpp
     src/repair/local_remesh.cpp
     src/repair/non_obtuse.cpp

@@ -10,6 +10,7 @@
 #include <acute/repair/joint_relaxation.h>
 #include <acute/repair/relocation.h>
 
+#include "repair/hub_ring.h"
 #include "repair/local_remesh.h"
 #include "repair/polar_fan.h"
 #include "repair/region.h"
@@ -50,7 +51,10 @@ class Repairer {
       const std::string problem = detail::constraint_violation(mesh_);
       if (!problem.empty()) throw InternalError("repair: input mesh: " + problem);
     }
-    if (params_.grade_sharp_corners) grade_sharp_corners();
+    if (params_.grade_sharp_corners) {
+      grade_sharp_corners();
+      ring_strip_hubs();
+    }
     std::size_t best_bad = SIZE_MAX;
     Mesh best;
     int stagnation = 0;
@@ -141,6 +145,48 @@ class Repairer {
       // triangles where the fan meets the old mesh, which the repair then smooths out.
       const bool better = s < base || s.infeasible < base.infeasible;
       if (!better) continue;
+      detail::commit_region(mesh_, region, sub);
+      forced_.resize(mesh_.n_vertices(), false);
+      changed = true;
+    }
+    if (changed) {
+      collect_garbage(mesh_);
+      refresh_forced();
+    }
+  }
+
+  /// The wide sectors beside strips at every input vertex rebuilt as rings (detail::rebuild_hub_ring)
+  /// over the apex's whole star, written back where the region's score improves.
+  void ring_strip_hubs() {
+    constexpr double kPi = 3.14159265358979323846;
+    const double strip_below = bounds_.min_deg * kPi / 180;
+    std::vector<std::pair<VertexHandle, double>> hubs;
+    for (auto vh : mesh_.vertices())
+      if (!mesh_.status(vh).deleted() && is_input(mesh_, vh) && forced(vh))
+        if (const double reach = detail::hub_ring_reach(mesh_, vh, strip_below); reach > 0) hubs.emplace_back(vh, reach);
+    bool changed = false;
+    for (const auto& [apex_big, reach] : hubs) {
+      if (out_of_time()) break;
+      std::vector<VertexHandle> near = detail::vertices_near(mesh_, apex_big, 1.6 * reach);
+      detail::Region region;
+      if (near.empty() || !detail::extract_region(mesh_, near, forced_, region)) continue;
+      VertexHandle apex;
+      for (auto vh : region.sub.vertices()) {
+        const auto i = static_cast<std::size_t>(vh.idx());
+        if (i < region.to_big.size() && region.to_big[i] == apex_big) apex = vh;
+      }
+      if (!apex.is_valid()) continue;
+      const Score base = score(region.sub, region.forced);
+      Mesh sub = region.sub;
+      if (!detail::rebuild_hub_ring(sub, apex, strip_below)) continue;
+      smooth_sub(sub, region.forced, 3);
+      const Score s = score(sub, region.forced);
+      if (trace_) {
+        const Point2 c = point2(mesh_, apex_big);
+        std::fprintf(stderr, "hub ring (%.6g, %.6g) reach %.4g: %zu vertices near; infeasible %zu -> %zu, bad %zu -> %zu, worst %.4f -> %.4f\n", c.x(), c.y(),
+                     reach, near.size(), base.infeasible, s.infeasible, base.bad, s.bad, base.worst, s.worst);
+      }
+      if (!(s < base || s.infeasible < base.infeasible)) continue;
       detail::commit_region(mesh_, region, sub);
       forced_.resize(mesh_.n_vertices(), false);
       changed = true;
@@ -600,6 +646,10 @@ class Repairer {
         for (int rings : {3, 5}) attempt([&, vh, rings](Mesh& sub) { return detail::rebuild_wedge(sub, vh, rings); });
         for (int rings : {3, 5}) attempt([&, vh, rings](Mesh& sub) { return detail::rebuild_hub(sub, vh, rings); });
       }
+    constexpr double kPi = 3.14159265358979323846;
+    for (auto vh : apexes)
+      if (is_input(sub0, vh) && static_cast<std::size_t>(vh.idx()) < forced.size() && forced[static_cast<std::size_t>(vh.idx())])
+        attempt([&, vh](Mesh& sub) { return detail::equalise_strip_apexes(sub, vh, bounds_.min_deg * kPi / 180); });
     joint_first = false;
 
     // A cluster that has resisted every single operation: the region re-sampled from scratch at

@@ -1,0 +1,192 @@
+#include "repair/hub_ring.h"
+
+#include <acute/mesh/geometry.h>
+#include <acute/mesh/sectors.h>
+#include <acute/ops/delaunay_flips.h>
+#include <acute/ops/insert.h>
+#include <acute/ops/remove.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace acute::detail {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Each gap of the ring is this much wider than the one before it (from either wall).
+constexpr double kGapGrowth = 1.6;
+/// The first gap from a strip's wall, in strip angles: its chord then matches the strip's triangles.
+constexpr double kFirstGapStrips = 1.5;
+/// The first gap from a wall with no strip across it, and the widest gap (radians).
+constexpr double kWideGap = 0.5;
+
+struct FanSector {
+  HalfedgeHandle first, last;  ///< wall spokes, counter-clockwise from first to last
+  double angle = 0;            ///< radians
+};
+
+/// The whole sectors at vh between walls (constrained edges), in counter-clockwise order.
+std::vector<FanSector> sectors_at(const Mesh& sub, VertexHandle vh) {
+  std::vector<FanSector> out;
+  // Segments (domain boundary included) alone are walls: a fan reaching the frozen border of a
+  // region copy is partial and left out.
+  const WallTest is_wall = [&](HalfedgeHandle spoke) { return is_constrained(sub, sub.edge_handle(spoke)); };
+  for (auto spoke : sub.voh_range(vh)) {
+    if (!is_wall(spoke) || sub.is_boundary(spoke)) continue;
+    const SectorSweep s = sweep_sector(sub, spoke, is_wall, 4096);
+    if (s.how != SectorEnd::Wall) continue;
+    out.push_back(FanSector{spoke, s.end, s.radians});
+  }
+  return out;
+}
+
+/// The angle of the sector across the wall spoke `wall` from `sector` (the one that ends or begins
+/// at it), or 0 when there is none (a boundary wall, a partial fan).
+double across(const std::vector<FanSector>& sectors, const FanSector& sector, HalfedgeHandle wall) {
+  for (const FanSector& s : sectors) {
+    if (&s == &sector) continue;
+    if (s.first == wall || s.last == wall) return s.angle;
+  }
+  return 0;
+}
+
+/// The strips across a wide sector's two walls: their angles (0 where there is none, or where the
+/// sector across is no strip). A sector is ringed when it is no strip and has one across a wall.
+struct StripsAcross {
+  double first = 0, last = 0;
+  bool any() const { return first > 0 || last > 0; }
+};
+
+StripsAcross strips_across(const std::vector<FanSector>& sectors, const FanSector& sector, double strip_below) {
+  StripsAcross out;
+  if (sector.angle < strip_below) return out;
+  const double a = across(sectors, sector, sector.first), b = across(sectors, sector, sector.last);
+  if (a < strip_below) out.first = a;
+  if (b < strip_below) out.last = b;
+  return out;
+}
+
+/// Distance from the apex to the first vertex along a wall spoke.
+double first_radius(const Mesh& mesh, HalfedgeHandle spoke) {
+  return (point2(mesh, mesh.to_vertex_handle(spoke)) - point2(mesh, mesh.from_vertex_handle(spoke))).norm();
+}
+
+/// The disk a ring rebuilds reaches this far beyond its walls' first vertices.
+constexpr double kReach = 1.1;
+
+}  // namespace
+
+double hub_ring_reach(const Mesh& mesh, VertexHandle apex, double strip_below) {
+  double reach = 0;
+  const std::vector<FanSector> sectors = sectors_at(mesh, apex);
+  for (const FanSector& sector : sectors)
+    if (strips_across(sectors, sector, strip_below).any())
+      reach = std::max({reach, kReach * first_radius(mesh, sector.first), kReach * first_radius(mesh, sector.last)});
+  return reach;
+}
+
+// (The CVT start slides wall vertices freely: its strip apex triangles are seldom isosceles.)
+bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below) {
+  bool changed = false;
+  const Point2 c = point2(sub, apex);
+  for (const FanSector& strip : sectors_at(sub, apex)) {
+    if (strip.angle >= strip_below) continue;
+    // Spokes are stable under the edits of the other strips (only their far ends change).
+    HalfedgeHandle near_spoke = strip.first, far_spoke = strip.last;
+    double r_near = (point2(sub, sub.to_vertex_handle(near_spoke)) - c).norm();
+    double r_far = (point2(sub, sub.to_vertex_handle(far_spoke)) - c).norm();
+    if (r_far < r_near) std::swap(near_spoke, far_spoke), std::swap(r_near, r_far);
+    const VertexHandle far_vertex = sub.to_vertex_handle(far_spoke);
+    if (is_input(sub, far_vertex) || r_far <= r_near * (1 + 1e-9)) continue;
+    const Point2 u = (point2(sub, far_vertex) - c) / r_far;
+    if (r_far < 1.5 * r_near) {
+      if (!remove_vertex(sub, far_vertex)) return false;
+      // The wall's spoke now runs to the next vertex along it.
+      far_spoke = HalfedgeHandle();
+      for (auto spoke : sub.voh_range(apex))
+        if (is_constrained(sub, sub.edge_handle(spoke)) && (point2(sub, sub.to_vertex_handle(spoke)) - c).normalized().dot(u) > 1 - 1e-12) far_spoke = spoke;
+      if (!far_spoke.is_valid()) return false;
+    }
+    if (!split_edge(sub, sub.edge_handle(far_spoke), c + r_near * u).is_valid()) return false;
+    changed = true;
+  }
+  return changed;
+}
+
+bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below) {
+  equalise_strip_apexes(sub, apex, strip_below);
+  const std::vector<FanSector> sectors = sectors_at(sub, apex);
+  const Point2 c = point2(sub, apex);
+  bool rebuilt = false;
+  for (const FanSector& sector : sectors) {
+    const StripsAcross strips = strips_across(sectors, sector, strip_below);
+    if (!strips.any()) continue;
+    const Point2 pa = point2(sub, sub.to_vertex_handle(sector.first)), pb = point2(sub, sub.to_vertex_handle(sector.last));
+    const double ra = (pa - c).norm(), rb = (pb - c).norm();
+    // Gaps from both walls, each side growing, until they fill the sector; then scaled to fit.
+    std::vector<double> from_a, from_b;
+    double next_a = strips.first > 0 ? kFirstGapStrips * strips.first : kWideGap;
+    double next_b = strips.last > 0 ? kFirstGapStrips * strips.last : kWideGap;
+    double total = 0;
+    while (total < sector.angle) {
+      if (next_a <= next_b) {
+        from_a.push_back(next_a), total += next_a, next_a = std::min(next_a * kGapGrowth, kWideGap);
+      } else {
+        from_b.push_back(next_b), total += next_b, next_b = std::min(next_b * kGapGrowth, kWideGap);
+      }
+    }
+    if (from_a.size() + from_b.size() < 2) continue;
+    std::vector<double> gaps = from_a;
+    gaps.insert(gaps.end(), from_b.rbegin(), from_b.rend());
+    for (double& g : gaps) g *= sector.angle / total;
+    // Ring radius along the sector: ra near wall a, rb near wall b, geometric in between.
+    const double alpha_a = std::atan2(pa.y() - c.y(), pa.x() - c.x());
+    std::vector<Point2> ring;
+    double phi = 0;
+    for (std::size_t k = 0; k + 1 < gaps.size(); ++k) {
+      phi += gaps[k];
+      const double t = phi / sector.angle;
+      const double r = ra * std::pow(rb / ra, std::clamp((t - 0.25) / 0.5, 0.0, 1.0));
+      ring.push_back(c + r * Point2(std::cos(alpha_a + phi), std::sin(alpha_a + phi)));
+    }
+    // The movable vertices of the sector near the apex go.
+    const double reach = kReach * std::max(ra, rb);
+    const Point2 ua = (pa - c) / ra, ub = (pb - c) / rb;
+    auto in_sector = [&](const Point2& q) {
+      const Point2 d = q - c;
+      const double ca = ua.x() * d.y() - ua.y() * d.x(), cb = d.x() * ub.y() - d.y() * ub.x();
+      return sector.angle <= kPi ? (ca > 0 && cb > 0) : (ca > 0 || cb > 0);
+    };
+    std::vector<VertexHandle> doomed;
+    for (auto vh : sub.vertices())
+      if (!sub.status(vh).deleted() && !is_input(sub, vh) && sub.data(vh).kind == VertexKind::Free && (point2(sub, vh) - c).norm() < reach &&
+          in_sector(point2(sub, vh)))
+        doomed.push_back(vh);
+    for (int pass = 0; pass < 2; ++pass)
+      for (auto vh : doomed)
+        if (!sub.status(vh).deleted()) remove_vertex(sub, vh);
+    for (auto vh : doomed)
+      if (!sub.status(vh).deleted()) return false;
+    // Each point located from the faces of the one before, then from the apex's (the walk never
+    // crosses a wall, so it must start on the sector's side).
+    VertexHandle last = apex;
+    for (const Point2& q : ring) {
+      VertexHandle vh;
+      for (VertexHandle from : {last, apex}) {
+        for (auto fh : sub.vf_range(from))
+          if (!vh.is_valid()) vh = insert_point(sub, q, fh);
+        if (vh.is_valid()) break;
+      }
+      if (!vh.is_valid() || sub.data(vh).kind != VertexKind::Free) return false;
+      last = vh;
+    }
+    rebuilt = true;
+  }
+  if (rebuilt) make_delaunay(sub);
+  return rebuilt;
+}
+
+}  // namespace acute::detail

@@ -1,0 +1,33 @@
+// Private to the repair layer: the ring of a hub's wide sectors. At an input vertex where a strip
+// sector (narrower than the min bound) meets a wide one, the first vertex p of the strip's wall is
+// an edge r away from the apex on the wide side, and the next one along the wall a strip's width,
+// r sin(theta), away. Around p, triangles with angles in the bounds can change their size by at
+// most a factor of two each, so the wide side needs a triangle that is thin too: only triangles at
+// the apex may be (their small angles are forced). The ring puts movable points at the walls'
+// first radii on rays into the wide sector, the first a few strip angles from the wall and each
+// next gap wider: isosceles triangles at the apex (apex angle the gap, base angles below 90), their
+// chords growing from a strip's width to the wide sector's spacing.
+#pragma once
+
+#include <acute/mesh/mesh.h>
+
+namespace acute::detail {
+
+/// Gives every strip sector at apex (narrower than strip_below, wholly in sub) an isosceles apex
+/// triangle: the farther of its walls' first vertices is replaced by one at the nearer's radius.
+/// With a strip angle theta the base angles are 90 - theta / 2, so radii differing by a factor
+/// below cos(theta) make the triangle obtuse. False when nothing changed or an edit failed.
+bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below);
+
+/// The radius of the disk around `apex` that rebuild_hub_ring would change (1.1 times the largest
+/// first radius of a ringed sector's walls), 0 when no wide sector at apex has a strip across a wall.
+double hub_ring_reach(const Mesh& mesh, VertexHandle apex, double strip_below);
+
+/// Equalises the strips' apex triangles at `apex` (an Input vertex of the region copy sub), then
+/// rebuilds every wide sector there that has a strip sector narrower than `strip_below` (radians)
+/// across one of its walls: the movable vertices of
+/// the wide sector closer than 1.1 times its walls' first radii are removed and the ring inserted
+/// (then the mesh is made Delaunay). False when there is no such sector or nothing was rebuilt.
+bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below);
+
+}  // namespace acute::detail

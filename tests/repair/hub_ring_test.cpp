@@ -1,0 +1,148 @@
+#include <acute/mesh/geometry.h>
+#include <acute/mesher.h>
+#include <acute/repair/angle_bounds.h>
+
+#include "repair/hub_ring.h"
+#include "repair/polar_fan.h"
+#include "repair/region.h"
+#include "support/mesh_verify.h"
+#include "support/wedge_domains.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace acute {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kStrip = 30 * kPi / 180;  // the min bound: sectors narrower are strips
+
+using test::cvt_mesh;
+using test::polar;
+using test::vertex_at;
+
+/// A hub on a straight boundary (as at la's (16.07, 0)): two interior segments leave the boundary
+/// vertex (0, 0) at 5 and 6 degrees below it, so the vertex has two strips and a 169-degree sector.
+Domain hub_on_a_wall() {
+  Domain d;
+  d.points = {Point2(-10, -6), Point2(10, -6), Point2(10, 0), Point2(0, 0), Point2(-10, 0), polar(8, -5), polar(8, 186)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 0}, {3, 5}, {3, 6}};
+  return d;
+}
+
+/// The largest angle of every triangle at vh.
+std::vector<double> max_angles_at(const Mesh& mesh, VertexHandle vh) {
+  std::vector<double> out;
+  for (auto fh : mesh.vf_range(vh)) {
+    const auto p = face_points(mesh, fh);
+    const auto a = angles_deg(p[0], p[1], p[2]);
+    out.push_back(std::max({a[0], a[1], a[2]}));
+  }
+  return out;
+}
+
+/// The region copy around the hub at the origin that the repair's pre-pass takes.
+struct HubRegion {
+  Mesh mesh;
+  detail::Region region;
+  VertexHandle apex;  ///< in region.sub
+  double area = 0;
+};
+
+HubRegion hub_region(std::size_t vertices) {
+  HubRegion h;
+  h.mesh = cvt_mesh(hub_on_a_wall(), vertices);
+  h.area = test::total_area(h.mesh);
+  const VertexHandle apex = vertex_at(h.mesh, Point2(0, 0));
+  const auto forced = forced_corner_vertices(h.mesh, 30);
+  const double reach = detail::hub_ring_reach(h.mesh, apex, kStrip);
+  EXPECT_GT(reach, 0) << "the hub has a wide sector beside a strip";
+  EXPECT_TRUE(detail::extract_region(h.mesh, detail::vertices_near(h.mesh, apex, 1.6 * reach), forced, h.region));
+  h.apex = vertex_at(h.region.sub, Point2(0, 0));
+  return h;
+}
+
+TEST(HubRing, only_wide_sectors_beside_strips_get_one) {
+  const Mesh hub = cvt_mesh(hub_on_a_wall(), 800);
+  EXPECT_GT(detail::hub_ring_reach(hub, vertex_at(hub, Point2(0, 0)), kStrip), 0);
+  // The sharp corner of a plain wedge has no wide sector; a 40-degree pair of sectors has no strip.
+  const Mesh wedge = cvt_mesh(test::sharp_wedge(12), 400);
+  EXPECT_EQ(detail::hub_ring_reach(wedge, vertex_at(wedge, Point2(0, 0)), kStrip), 0);
+  const Mesh wide = cvt_mesh(test::wedge_between_segments(40), 600);
+  EXPECT_EQ(detail::hub_ring_reach(wide, vertex_at(wide, Point2(0, 0)), kStrip), 0);
+}
+
+TEST(HubRing, strips_get_isosceles_apex_triangles_and_the_wide_sector_a_graded_ring) {
+  for (std::size_t n : {800u, 4000u}) {
+    SCOPED_TRACE(n);
+    HubRegion h = hub_region(n);
+    ASSERT_TRUE(h.apex.is_valid());
+    Mesh sub = h.region.sub;
+    ASSERT_TRUE(detail::rebuild_hub_ring(sub, h.apex, kStrip));
+    // Every triangle at the hub: no angle of 90 or more (the strips' apex triangles have base
+    // angles of 87 and 87.5 degrees, the ring's are isosceles at least as wide).
+    for (double a : max_angles_at(sub, h.apex)) EXPECT_LT(a, 90);
+    // Next to each strip's wall the ring's first gap is a few strip angles, not the sector's spacing.
+    const Point2 c = point2(sub, h.apex);
+    std::vector<double> directions;
+    for (auto w : sub.vv_range(h.apex)) directions.push_back(std::atan2(point2(sub, w).y() - c.y(), point2(sub, w).x() - c.x()) * 180 / kPi);
+    std::sort(directions.begin(), directions.end());
+    // Directions below the boundary, from -180 (the left wall) to 0: the left strip's wall at -174,
+    // the right one's at -5, and the ring between.
+    std::vector<double> below;
+    for (double d : directions)
+      if (d < 0 && d > -180 + 1e-9) below.push_back(d);
+    ASSERT_GE(below.size(), 4u);
+    EXPECT_NEAR(below.front(), -174, 1e-6);
+    EXPECT_NEAR(below.back(), -5, 1e-6);
+    EXPECT_LE(below[1] - below[0], 2.5 * 6);
+    EXPECT_LE(below[below.size() - 1] - below[below.size() - 2], 2.5 * 5);
+    // Back in the big mesh: valid, conforming, the same area.
+    detail::commit_region(h.mesh, h.region, sub);
+    h.mesh.garbage_collection();
+    EXPECT_MESH_VALID(h.mesh);
+    EXPECT_EQ(detail::constraint_violation(h.mesh), "");
+    EXPECT_NEAR(test::total_area(h.mesh), h.area, 1e-12 * h.area);
+  }
+}
+
+TEST(EqualiseStripApexes, the_apex_triangles_become_isosceles_and_their_wall_vertices_stay) {
+  HubRegion h = hub_region(2000);
+  ASSERT_TRUE(h.apex.is_valid());
+  Mesh sub = h.region.sub;
+  detail::equalise_strip_apexes(sub, h.apex, kStrip);
+  const auto forced = forced_corner_vertices(sub, 30);
+  int strips = 0;
+  for (auto fh : sub.vf_range(h.apex)) {
+    const auto p = face_points(sub, fh);
+    const auto a = angles_deg(p[0], p[1], p[2]);
+    int walls = 0;  // of the face's two edges at the apex: both for a strip's apex triangle
+    for (auto heh : sub.fh_range(fh))
+      if (sub.from_vertex_handle(heh) == h.apex || sub.to_vertex_handle(heh) == h.apex) walls += is_constrained(sub, sub.edge_handle(heh));
+    if (walls < 2) continue;
+    ++strips;
+    EXPECT_LT(std::max({a[0], a[1], a[2]}), 90);
+    for (auto vh : sub.fv_range(fh)) {
+      if (vh != h.apex) {
+        EXPECT_TRUE(closes_strip_apex(sub, vh, forced)) << "relocation leaves it where it is";
+      }
+    }
+  }
+  EXPECT_EQ(strips, 2);
+  // A wall vertex not at the hub moves freely.
+  for (auto vh : sub.vertices()) {
+    if (!sub.status(vh).deleted() && sub.data(vh).kind == VertexKind::OnSegment && !sub.find_halfedge(vh, h.apex).is_valid()) {
+      EXPECT_FALSE(closes_strip_apex(sub, vh, forced));
+    }
+  }
+  detail::commit_region(h.mesh, h.region, sub);
+  h.mesh.garbage_collection();
+  EXPECT_MESH_VALID(h.mesh);
+  EXPECT_EQ(detail::constraint_violation(h.mesh), "");
+  EXPECT_NEAR(test::total_area(h.mesh), h.area, 1e-12 * h.area);
+}
+
+}  // namespace
+}  // namespace acute
