@@ -37,6 +37,8 @@ bool bounds_strip_sector(const Mesh& mesh, HalfedgeHandle out) {
   return false;
 }
 
+double StripApex::triangle_radius(double size_at_apex) const { return std::min(reach, size_at_apex / std::sin(narrowest)); }
+
 StripApex strip_apex(const Mesh& mesh, VertexHandle vh) {
   StripApex out;
   double shortest = std::numeric_limits<double>::infinity();

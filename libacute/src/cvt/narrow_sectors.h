@@ -19,11 +19,13 @@ namespace acute::detail {
 constexpr double kStripSector = 3.14159265358979323846 / 6.0;
 
 /// The apex of strip sectors: the narrowest of them (radians; 0 when vh has none) and how far the
-/// size field's strip samples start from it, a third of its shortest wall. The apex triangle reaches
-/// at most that far (less where the size is finer than the strip there: sample_domain).
+/// size field's strip samples start from it, a third of its shortest wall.
 struct StripApex {
   double narrowest = 0;
   double reach = 0;
+  /// The radius of the apex triangle, where the sampler cuts both walls: where the strip is as
+  /// wide as `size_at_apex` (a fine request resolves the strip from close in), at most the reach.
+  double triangle_radius(double size_at_apex) const;
 };
 StripApex strip_apex(const Mesh& mesh, VertexHandle vh);
 

@@ -300,10 +300,8 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
     if (sharp) {
       ++stats.small_angle_apices;
       shell[static_cast<std::size_t>(vh.idx())] = std::min(field.eval(v, hint), shortest / 3.0);
-      // The apex triangle of a strip reaches where the strip is as wide as the size at the apex
-      // (a fine request resolves the strip from close in), at most to the strip samples' start.
       const detail::StripApex apex = detail::strip_apex(cdt, vh);
-      if (apex.narrowest > 0) strip_shell[static_cast<std::size_t>(vh.idx())] = std::min(apex.reach, field.eval(v, hint) / std::sin(apex.narrowest));
+      if (apex.narrowest > 0) strip_shell[static_cast<std::size_t>(vh.idx())] = apex.triangle_radius(field.eval(v, hint));
     }
   }
   // The first cut from `out`'s vertex: on the walls of a strip sector at the apex triangle's radius
