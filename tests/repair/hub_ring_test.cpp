@@ -2,6 +2,8 @@
 #include <acute/mesher.h>
 #include <acute/repair/angle_bounds.h>
 
+#include <acute/ops/insert.h>
+
 #include "repair/hub_ring.h"
 #include "repair/polar_fan.h"
 #include "repair/region.h"
@@ -142,6 +144,62 @@ TEST(EqualiseStripApexes, the_apex_triangles_become_isosceles_and_their_wall_ver
   EXPECT_MESH_VALID(h.mesh);
   EXPECT_EQ(detail::constraint_violation(h.mesh), "");
   EXPECT_NEAR(test::total_area(h.mesh), h.area, 1e-12 * h.area);
+}
+
+TEST(EqualiseStripApexes, strips_side_by_side_sharing_a_wall_all_end_isosceles) {
+  // Three interior segments from the centre of a square at 0, 10 and 22 degrees: two strips share
+  // the 10-degree wall (as in clusters.poly under a 35-degree bound). Removing one strip's far wall
+  // vertex re-triangulates the apex's star, so the other strip's spokes must be found afresh.
+  for (double strip_deg : {30.0, 35.0}) {
+    for (std::size_t n : {600u, 2500u}) {
+      SCOPED_TRACE(testing::Message() << strip_deg << " degrees, " << n << " vertices");
+      Domain d = test::wedge_between_segments(10);
+      d.points.push_back(polar(8, 22));
+      d.segments.push_back({4, 7});
+      Mesh mesh = cvt_mesh(d, n);
+      const double area = test::total_area(mesh);
+      const VertexHandle apex_big = vertex_at(mesh, Point2(0, 0));
+      ASSERT_TRUE(apex_big.is_valid());
+      detail::Region region;
+      ASSERT_TRUE(detail::extract_region(mesh, detail::vertices_near(mesh, apex_big, 3.0), forced_corner_vertices(mesh, strip_deg), region));
+      Mesh sub = region.sub;
+      const VertexHandle apex = vertex_at(sub, Point2(0, 0));
+      ASSERT_TRUE(apex.is_valid());
+      // The shared wall's first vertex made the far one of both strips (the other two walls cut at
+      // 0.8 of its radius): each strip then removes it, and the second must not use the first's spokes.
+      auto spoke_towards = [&](double deg) -> HalfedgeHandle {
+        for (auto h : sub.voh_range(apex))
+          if (is_constrained(sub, sub.edge_handle(h)) && point2(sub, sub.to_vertex_handle(h)).normalized().dot(polar(1, deg)) > 1 - 1e-9) return h;
+        return HalfedgeHandle();
+      };
+      ASSERT_TRUE(spoke_towards(10).is_valid());
+      const double r10 = point2(sub, sub.to_vertex_handle(spoke_towards(10))).norm();
+      for (double deg : {0.0, 22.0}) {
+        const HalfedgeHandle h = spoke_towards(deg);
+        ASSERT_TRUE(h.is_valid());
+        if (point2(sub, sub.to_vertex_handle(h)).norm() > 0.8 * r10) split_edge(sub, sub.edge_handle(h), 0.8 * r10 * polar(1, deg));
+        ASSERT_NEAR(point2(sub, sub.to_vertex_handle(spoke_towards(deg))).norm(), 0.8 * r10, 1e-12 * r10);
+      }
+      EXPECT_TRUE(detail::equalise_strip_apexes(sub, apex, strip_deg * kPi / 180));
+      int strips = 0;
+      for (auto fh : sub.vf_range(apex)) {
+        int walls = 0;
+        for (auto heh : sub.fh_range(fh))
+          if (sub.from_vertex_handle(heh) == apex || sub.to_vertex_handle(heh) == apex) walls += is_constrained(sub, sub.edge_handle(heh));
+        if (walls < 2) continue;
+        ++strips;
+        const auto p = face_points(sub, fh);
+        const auto a = angles_deg(p[0], p[1], p[2]);
+        EXPECT_LT(std::max({a[0], a[1], a[2]}), 90);
+      }
+      EXPECT_EQ(strips, 2);
+      detail::commit_region(mesh, region, sub);
+      mesh.garbage_collection();
+      EXPECT_MESH_VALID(mesh);
+      EXPECT_EQ(detail::constraint_violation(mesh), "");
+      EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
+    }
+  }
 }
 
 }  // namespace

@@ -109,12 +109,13 @@ bool plan_removal(const Mesh& mesh, VertexHandle vh, RemovalPlan& plan) {
 
 OpVerdict can_remove_vertex(const Mesh& mesh, VertexHandle vh) {
   if (is_input(mesh, vh)) return OpVerdict::InputVertex;
+  if (mesh.status(vh).deleted() || mesh.is_isolated(vh)) return OpVerdict::Topology;
   RemovalPlan plan;
   return plan_removal(mesh, vh, plan) ? OpVerdict::Ok : OpVerdict::WouldInvert;
 }
 
 bool remove_vertex(Mesh& mesh, VertexHandle vh) {
-  if (is_input(mesh, vh)) return false;
+  if (is_input(mesh, vh) || mesh.status(vh).deleted() || mesh.is_isolated(vh)) return false;
   RemovalPlan plan;
   if (!plan_removal(mesh, vh, plan)) return false;
   // Ring edges on the mesh boundary vanish with the star and are re-created: keep their data.
