@@ -1,13 +1,12 @@
 #include <acute/mesh/geometry.h>
 #include <acute/mesher.h>
-#include <acute/repair/angle_bounds.h>
-
 #include <acute/ops/insert.h>
+#include <acute/repair/angle_bounds.h>
 
 #include "repair/hub_ring.h"
 #include "repair/polar_fan.h"
 #include "repair/region.h"
-#include "support/mesh_verify.h"
+#include "support/region_verify.h"
 #include "support/wedge_domains.h"
 
 #include <gtest/gtest.h>
@@ -102,11 +101,7 @@ TEST(HubRing, strips_get_isosceles_apex_triangles_and_the_wide_sector_a_graded_r
     EXPECT_LE(below[1] - below[0], 2.5 * 6);
     EXPECT_LE(below[below.size() - 1] - below[below.size() - 2], 2.5 * 5);
     // Back in the big mesh: valid, conforming, the same area.
-    detail::commit_region(h.mesh, h.region, sub);
-    h.mesh.garbage_collection();
-    EXPECT_MESH_VALID(h.mesh);
-    EXPECT_EQ(detail::constraint_violation(h.mesh), "");
-    EXPECT_NEAR(test::total_area(h.mesh), h.area, 1e-12 * h.area);
+    test::expect_commit_keeps_the_mesh(h.mesh, h.region, sub, h.area);
   }
 }
 
@@ -139,11 +134,7 @@ TEST(EqualiseStripApexes, the_apex_triangles_become_isosceles_and_their_wall_ver
       EXPECT_FALSE(closes_strip_apex(sub, vh, forced));
     }
   }
-  detail::commit_region(h.mesh, h.region, sub);
-  h.mesh.garbage_collection();
-  EXPECT_MESH_VALID(h.mesh);
-  EXPECT_EQ(detail::constraint_violation(h.mesh), "");
-  EXPECT_NEAR(test::total_area(h.mesh), h.area, 1e-12 * h.area);
+  test::expect_commit_keeps_the_mesh(h.mesh, h.region, sub, h.area);
 }
 
 TEST(EqualiseStripApexes, strips_side_by_side_sharing_a_wall_all_end_isosceles) {
@@ -193,11 +184,7 @@ TEST(EqualiseStripApexes, strips_side_by_side_sharing_a_wall_all_end_isosceles) 
         EXPECT_LT(std::max({a[0], a[1], a[2]}), 90);
       }
       EXPECT_EQ(strips, 2);
-      detail::commit_region(mesh, region, sub);
-      mesh.garbage_collection();
-      EXPECT_MESH_VALID(mesh);
-      EXPECT_EQ(detail::constraint_violation(mesh), "");
-      EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
+      test::expect_commit_keeps_the_mesh(mesh, region, sub, area);
     }
   }
 }

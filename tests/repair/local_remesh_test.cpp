@@ -5,6 +5,7 @@
 #include "repair/local_remesh.h"
 #include "repair/region.h"
 #include "support/mesh_verify.h"
+#include "support/region_verify.h"
 #include "support/wedge_domains.h"
 
 #include <gtest/gtest.h>
@@ -13,6 +14,8 @@
 
 namespace acute {
 namespace {
+
+using test::expect_commit_keeps_the_mesh;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -44,15 +47,6 @@ std::size_t triangles_at(const Mesh& mesh, VertexHandle vh) {
   std::size_t n = 0;
   for (auto fh : mesh.vf_range(vh)) n += fh.is_valid();
   return n;
-}
-
-/// Writes sub back into mesh: the mesh stays valid, conforming and of the same area.
-void expect_commit_keeps_the_mesh(Mesh& mesh, const detail::Region& region, const Mesh& sub, double area) {
-  detail::commit_region(mesh, region, sub);
-  mesh.garbage_collection();
-  EXPECT_MESH_VALID(mesh);
-  EXPECT_EQ(detail::constraint_violation(mesh), "");
-  EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
 }
 
 TEST(RebuildWedge, sharp_apex_gets_an_isosceles_triangle_and_three_triangles_at_its_base) {
@@ -129,11 +123,7 @@ TEST(RemeshRegion, resampled_region_stays_valid_and_conforming) {
     ASSERT_GT(h, 0);
     ASSERT_TRUE(detail::remesh_region(sub, scale * h, 7));
     Mesh big = mesh;
-    detail::commit_region(big, region, sub);
-    big.garbage_collection();
-    EXPECT_MESH_VALID(big);
-    EXPECT_EQ(detail::constraint_violation(big), "");
-    EXPECT_NEAR(test::total_area(big), area, 1e-12 * area);
+    expect_commit_keeps_the_mesh(big, region, sub, area);
     // Re-sampled at about the same spacing: the vertex count stays in proportion.
     EXPECT_LT(big.n_vertices(), mesh.n_vertices() * 3 / 2);
   }

@@ -4,6 +4,7 @@
 
 #include "repair/region.h"
 #include "support/mesh_verify.h"
+#include "support/region_verify.h"
 
 namespace acute {
 namespace {
@@ -58,11 +59,7 @@ TEST(Region, edits_in_the_copy_never_touch_the_frozen_border) {
     for (auto vh : sub.fv_range(fh)) c += point2(sub, vh) / 3.0;
     insert_point(sub, c, fh);
   }
-  detail::commit_region(mesh, region, sub);
-  mesh.garbage_collection();
-  EXPECT_MESH_VALID(mesh);
-  EXPECT_EQ(detail::constraint_violation(mesh), "");
-  EXPECT_NEAR(test::total_area(mesh), area, 1e-12 * area);
+  test::expect_commit_keeps_the_mesh(mesh, region, sub, area);
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include <cstdlib>
 #include <chrono>
 #include <cmath>
+#include <functional>
 
 namespace acute {
 
@@ -112,42 +113,48 @@ class Repairer {
 
   void refresh_forced() { forced_ = forced_corner_vertices(mesh_, bounds_.min_deg); }
 
+  /// Rebuilds the disk around the input vertex apex_big: a region copy of the movable vertices
+  /// within `radius` of it, `rebuild` on the copy, a few smoothing sweeps, and the copy written back
+  /// where it then has fewer infeasible vertices (structural defects no smoothing fixes, which
+  /// outweigh more bad triangles where the new part meets the old mesh: the repair smooths those
+  /// out) or a better score. True when written back.
+  bool rebuild_disk(VertexHandle apex_big, double radius, const char* what, const std::function<bool(Mesh&, VertexHandle)>& rebuild) {
+    std::vector<VertexHandle> near = detail::vertices_near(mesh_, apex_big, radius);
+    detail::Region region;
+    if (near.empty() || !detail::extract_region(mesh_, near, forced_, region)) return false;
+    VertexHandle apex;
+    for (auto vh : region.sub.vertices()) {
+      const auto i = static_cast<std::size_t>(vh.idx());
+      if (i < region.to_big.size() && region.to_big[i] == apex_big) apex = vh;
+    }
+    if (!apex.is_valid()) return false;
+    const Score base = score(region.sub, region.forced);
+    Mesh sub = region.sub;
+    if (!rebuild(sub, apex)) return false;
+    smooth_sub(sub, region.forced, 3);
+    const Score s = score(sub, region.forced);
+    if (trace_) {
+      const Point2 c = point2(mesh_, apex_big);
+      std::fprintf(stderr, "%s (%.6g, %.6g), disk %.4g: %zu vertices near; infeasible %zu -> %zu, bad %zu -> %zu, worst %.4f -> %.4f\n", what, c.x(), c.y(),
+                   radius, near.size(), base.infeasible, s.infeasible, base.bad, s.bad, base.worst, s.worst);
+    }
+    if (!(s < base || s.infeasible < base.infeasible)) return false;
+    detail::commit_region(mesh_, region, sub);
+    forced_.resize(mesh_.n_vertices(), false);
+    return true;
+  }
+
   /// The disk around each forced corner (a sector narrower than the min bound) rebuilt as a
-  /// log-polar fan (detail::build_polar_fan), written back where its region then has fewer
-  /// infeasible vertices or a better score.
+  /// log-polar fan (detail::build_polar_fan), with a margin for the smoothing to blend the two.
   void grade_sharp_corners() {
     constexpr double kPi = 3.14159265358979323846;
     bool changed = false;
     for (const detail::SharpCorner& corner : detail::find_sharp_corners(mesh_, bounds_.min_deg * kPi / 180)) {
       if (out_of_time()) break;
       if (mesh_.status(corner.apex).deleted()) continue;
-      // The fan's disk and a margin around it for the smoothing to blend the two.
-      std::vector<VertexHandle> near = detail::vertices_near(mesh_, corner.apex, 1.5 * corner.radius);
-      detail::Region region;
-      if (near.empty() || !detail::extract_region(mesh_, near, forced_, region)) continue;
-      VertexHandle apex;
-      for (auto vh : region.sub.vertices()) {
-        const auto i = static_cast<std::size_t>(vh.idx());
-        if (i < region.to_big.size() && region.to_big[i] == corner.apex) apex = vh;
-      }
-      if (!apex.is_valid()) continue;
-      const Score base = score(region.sub, region.forced);
-      Mesh sub = region.sub;
-      if (!detail::build_polar_fan(sub, apex, corner.radius, detail::kPolarFanRings)) continue;
-      smooth_sub(sub, region.forced, 3);
-      const Score s = score(sub, region.forced);
-      if (trace_) {
-        const Point2 c = point2(mesh_, corner.apex);
-        std::fprintf(stderr, "sharp corner (%.6g, %.6g) %.2f deg radius %.4g: %zu vertices near; infeasible %zu -> %zu, bad %zu -> %zu, worst %.4f -> %.4f\n", c.x(), c.y(),
-                     corner.narrowest * 180 / kPi, corner.radius, near.size(), base.infeasible, s.infeasible, base.bad, s.bad, base.worst, s.worst);
-      }
-      // Fewer infeasible vertices (structural defects no smoothing fixes) outweigh more bad
-      // triangles where the fan meets the old mesh, which the repair then smooths out.
-      const bool better = s < base || s.infeasible < base.infeasible;
-      if (!better) continue;
-      detail::commit_region(mesh_, region, sub);
-      forced_.resize(mesh_.n_vertices(), false);
-      changed = true;
+      changed = rebuild_disk(corner.apex, 1.5 * corner.radius, "sharp corner", [&](Mesh& sub, VertexHandle apex) {
+                  return detail::build_polar_fan(sub, apex, corner.radius, detail::kPolarFanRings);
+                }) || changed;
     }
     if (changed) {
       collect_garbage(mesh_);
@@ -156,7 +163,7 @@ class Repairer {
   }
 
   /// The wide sectors beside strips at every input vertex rebuilt as rings (detail::rebuild_hub_ring)
-  /// over the apex's whole star, written back where the region's score improves.
+  /// over the apex's whole star.
   void ring_strip_hubs() {
     constexpr double kPi = 3.14159265358979323846;
     const double strip_below = bounds_.min_deg * kPi / 180;
@@ -165,31 +172,10 @@ class Repairer {
       if (!mesh_.status(vh).deleted() && is_input(mesh_, vh) && forced(vh))
         if (const double reach = detail::hub_ring_reach(mesh_, vh, strip_below); reach > 0) hubs.emplace_back(vh, reach);
     bool changed = false;
-    for (const auto& [apex_big, reach] : hubs) {
+    for (const auto& [apex, reach] : hubs) {
       if (out_of_time()) break;
-      std::vector<VertexHandle> near = detail::vertices_near(mesh_, apex_big, 1.6 * reach);
-      detail::Region region;
-      if (near.empty() || !detail::extract_region(mesh_, near, forced_, region)) continue;
-      VertexHandle apex;
-      for (auto vh : region.sub.vertices()) {
-        const auto i = static_cast<std::size_t>(vh.idx());
-        if (i < region.to_big.size() && region.to_big[i] == apex_big) apex = vh;
-      }
-      if (!apex.is_valid()) continue;
-      const Score base = score(region.sub, region.forced);
-      Mesh sub = region.sub;
-      if (!detail::rebuild_hub_ring(sub, apex, strip_below)) continue;
-      smooth_sub(sub, region.forced, 3);
-      const Score s = score(sub, region.forced);
-      if (trace_) {
-        const Point2 c = point2(mesh_, apex_big);
-        std::fprintf(stderr, "hub ring (%.6g, %.6g) reach %.4g: %zu vertices near; infeasible %zu -> %zu, bad %zu -> %zu, worst %.4f -> %.4f\n", c.x(), c.y(),
-                     reach, near.size(), base.infeasible, s.infeasible, base.bad, s.bad, base.worst, s.worst);
-      }
-      if (!(s < base || s.infeasible < base.infeasible)) continue;
-      detail::commit_region(mesh_, region, sub);
-      forced_.resize(mesh_.n_vertices(), false);
-      changed = true;
+      changed = rebuild_disk(apex, 1.6 * reach, "hub ring", [&](Mesh& sub, VertexHandle a) { return detail::rebuild_hub_ring(sub, a, strip_below); }) ||
+                changed;
     }
     if (changed) {
       collect_garbage(mesh_);
