@@ -123,12 +123,14 @@ bool closes_strip_apex(const Mesh& mesh, VertexHandle vh, const std::vector<bool
   };
   for (auto spoke : mesh.voh_range(vh)) {
     const VertexHandle apex = mesh.to_vertex_handle(spoke);
-    if (!is_input(mesh, apex) || !is_forced(apex) || !is_segment_or_boundary(mesh, spoke)) continue;
+    // Walls are segments (the domain boundary included): in a region copy the frozen border's
+    // edges are boundary edges too, and no strip.
+    if (!is_input(mesh, apex) || !is_forced(apex) || !is_constrained(mesh, mesh.edge_handle(spoke))) continue;
     for (HalfedgeHandle side : {spoke, mesh.opposite_halfedge_handle(spoke)}) {
       if (mesh.is_boundary(side)) continue;
       // The triangle's edge at the apex other than (apex, vh).
       const HalfedgeHandle other = side == spoke ? mesh.next_halfedge_handle(side) : mesh.prev_halfedge_handle(side);
-      if (is_segment_or_boundary(mesh, other)) return true;
+      if (is_constrained(mesh, mesh.edge_handle(other))) return true;
     }
   }
   return false;
