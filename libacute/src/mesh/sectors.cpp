@@ -48,4 +48,19 @@ SectorSweep sweep_sector(const Mesh& mesh, HalfedgeHandle start, const WallTest&
   return s;
 }
 
+std::vector<SegmentSector> segment_sectors(const Mesh& mesh, VertexHandle vh, bool* partial) {
+  std::vector<SegmentSector> out;
+  if (partial) *partial = false;
+  const WallTest is_segment = [&](HalfedgeHandle spoke) { return is_constrained(mesh, mesh.edge_handle(spoke)); };
+  for (auto spoke : mesh.voh_range(vh)) {
+    if (!is_segment(spoke) || mesh.is_boundary(spoke)) continue;
+    const SectorSweep sweep = sweep_sector(mesh, spoke, is_segment, 4096);
+    if (sweep.how == SectorEnd::Wall)
+      out.push_back(SegmentSector{spoke, sweep.end, sweep.radians});
+    else if (partial)
+      *partial = true;
+  }
+  return out;
+}
+
 }  // namespace acute

@@ -23,32 +23,12 @@ constexpr double kFirstGapStrips = 1.5;
 /// The first gap from a wall with no strip across it, and the widest gap (radians).
 constexpr double kWideGap = 0.5;
 
-struct FanSector {
-  HalfedgeHandle first, last;  ///< wall spokes, counter-clockwise from first to last
-  double angle = 0;            ///< radians
-};
-
-/// The whole sectors at vh between walls (constrained edges), in counter-clockwise order.
-std::vector<FanSector> sectors_at(const Mesh& sub, VertexHandle vh) {
-  std::vector<FanSector> out;
-  // Segments (domain boundary included) alone are walls: a fan reaching the frozen border of a
-  // region copy is partial and left out.
-  const WallTest is_wall = [&](HalfedgeHandle spoke) { return is_constrained(sub, sub.edge_handle(spoke)); };
-  for (auto spoke : sub.voh_range(vh)) {
-    if (!is_wall(spoke) || sub.is_boundary(spoke)) continue;
-    const SectorSweep s = sweep_sector(sub, spoke, is_wall, 4096);
-    if (s.how != SectorEnd::Wall) continue;
-    out.push_back(FanSector{spoke, s.end, s.radians});
-  }
-  return out;
-}
-
 /// The angle of the sector across the wall spoke `wall` from `sector` (the one that ends or begins
 /// at it), or 0 when there is none (a boundary wall, a partial fan).
-double across(const std::vector<FanSector>& sectors, const FanSector& sector, HalfedgeHandle wall) {
-  for (const FanSector& s : sectors) {
+double across(const std::vector<SegmentSector>& sectors, const SegmentSector& sector, HalfedgeHandle wall) {
+  for (const SegmentSector& s : sectors) {
     if (&s == &sector) continue;
-    if (s.first == wall || s.last == wall) return s.angle;
+    if (s.first == wall || s.last == wall) return s.radians;
   }
   return 0;
 }
@@ -60,9 +40,9 @@ struct StripsAcross {
   bool any() const { return first > 0 || last > 0; }
 };
 
-StripsAcross strips_across(const std::vector<FanSector>& sectors, const FanSector& sector, double strip_below) {
+StripsAcross strips_across(const std::vector<SegmentSector>& sectors, const SegmentSector& sector, double strip_below) {
   StripsAcross out;
-  if (sector.angle < strip_below) return out;
+  if (sector.radians < strip_below) return out;
   const double a = across(sectors, sector, sector.first), b = across(sectors, sector, sector.last);
   if (a < strip_below) out.first = a;
   if (b < strip_below) out.last = b;
@@ -81,8 +61,8 @@ constexpr double kReach = 1.1;
 
 double hub_ring_reach(const Mesh& mesh, VertexHandle apex, double strip_below) {
   double reach = 0;
-  const std::vector<FanSector> sectors = sectors_at(mesh, apex);
-  for (const FanSector& sector : sectors)
+  const std::vector<SegmentSector> sectors = segment_sectors(mesh, apex);
+  for (const SegmentSector& sector : sectors)
     if (strips_across(sectors, sector, strip_below).any())
       reach = std::max({reach, kReach * first_radius(mesh, sector.first), kReach * first_radius(mesh, sector.last)});
   return reach;
@@ -96,8 +76,8 @@ bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below) {
   bool changed = false;
   for (int pass = 0, edited = 1; edited && pass < 64; ++pass) {
     edited = 0;
-    for (const FanSector& strip : sectors_at(sub, apex)) {
-      if (strip.angle >= strip_below) continue;
+    for (const SegmentSector& strip : segment_sectors(sub, apex)) {
+      if (strip.radians >= strip_below) continue;
       HalfedgeHandle near_spoke = strip.first, far_spoke = strip.last;
       double r_near = first_radius(sub, near_spoke), r_far = first_radius(sub, far_spoke);
       if (r_far < r_near) std::swap(near_spoke, far_spoke), std::swap(r_near, r_far);
@@ -124,10 +104,17 @@ bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below) {
 
 bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below) {
   equalise_strip_apexes(sub, apex, strip_below);
-  const std::vector<FanSector> sectors = sectors_at(sub, apex);
   const Point2 c = point2(sub, apex);
-  bool rebuilt = false;
-  for (const FanSector& sector : sectors) {
+  // Every ring is planned before any edit: the edits re-triangulate the apex's star, so the
+  // sectors' spoke handles would not survive them.
+  struct RingPlan {
+    std::vector<Point2> ring;
+    Point2 ua, ub;  ///< the walls' directions, counter-clockwise from ua to ub
+    double angle = 0, reach = 0;
+  };
+  std::vector<RingPlan> plans;
+  const std::vector<SegmentSector> sectors = segment_sectors(sub, apex);
+  for (const SegmentSector& sector : sectors) {
     const StripsAcross strips = strips_across(sectors, sector, strip_below);
     if (!strips.any()) continue;
     const Point2 pa = point2(sub, sub.to_vertex_handle(sector.first)), pb = point2(sub, sub.to_vertex_handle(sector.last));
@@ -137,7 +124,7 @@ bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below) {
     double next_a = strips.first > 0 ? kFirstGapStrips * strips.first : kWideGap;
     double next_b = strips.last > 0 ? kFirstGapStrips * strips.last : kWideGap;
     double total = 0;
-    while (total < sector.angle) {
+    while (total < sector.radians) {
       if (next_a <= next_b) {
         from_a.push_back(next_a), total += next_a, next_a = std::min(next_a * kGapGrowth, kWideGap);
       } else {
@@ -147,28 +134,32 @@ bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below) {
     if (from_a.size() + from_b.size() < 2) continue;
     std::vector<double> gaps = from_a;
     gaps.insert(gaps.end(), from_b.rbegin(), from_b.rend());
-    for (double& g : gaps) g *= sector.angle / total;
+    for (double& g : gaps) g *= sector.radians / total;
     // Ring radius along the sector: ra near wall a, rb near wall b, geometric in between.
+    RingPlan plan;
     const double alpha_a = std::atan2(pa.y() - c.y(), pa.x() - c.x());
-    std::vector<Point2> ring;
     double phi = 0;
     for (std::size_t k = 0; k + 1 < gaps.size(); ++k) {
       phi += gaps[k];
-      const double t = phi / sector.angle;
+      const double t = phi / sector.radians;
       const double r = ra * std::pow(rb / ra, std::clamp((t - 0.25) / 0.5, 0.0, 1.0));
-      ring.push_back(c + r * Point2(std::cos(alpha_a + phi), std::sin(alpha_a + phi)));
+      plan.ring.push_back(c + r * Point2(std::cos(alpha_a + phi), std::sin(alpha_a + phi)));
     }
-    // The movable vertices of the sector near the apex go.
-    const double reach = kReach * std::max(ra, rb);
-    const Point2 ua = (pa - c) / ra, ub = (pb - c) / rb;
+    plan.ua = (pa - c) / ra, plan.ub = (pb - c) / rb;
+    plan.angle = sector.radians;
+    plan.reach = kReach * std::max(ra, rb);
+    plans.push_back(std::move(plan));
+  }
+  for (const RingPlan& plan : plans) {
+    // The Steiner points of the sector near the apex go (those on segments stay).
     auto in_sector = [&](const Point2& q) {
       const Point2 d = q - c;
-      const double ca = ua.x() * d.y() - ua.y() * d.x(), cb = d.x() * ub.y() - d.y() * ub.x();
-      return sector.angle <= kPi ? (ca > 0 && cb > 0) : (ca > 0 || cb > 0);
+      const double ca = plan.ua.x() * d.y() - plan.ua.y() * d.x(), cb = d.x() * plan.ub.y() - d.y() * plan.ub.x();
+      return plan.angle <= kPi ? (ca > 0 && cb > 0) : (ca > 0 || cb > 0);
     };
     std::vector<VertexHandle> doomed;
     for (auto vh : sub.vertices())
-      if (!sub.status(vh).deleted() && !is_input(sub, vh) && sub.data(vh).kind == VertexKind::Free && (point2(sub, vh) - c).norm() < reach &&
+      if (!sub.status(vh).deleted() && sub.data(vh).kind == VertexKind::Free && (point2(sub, vh) - c).norm() < plan.reach &&
           in_sector(point2(sub, vh)))
         doomed.push_back(vh);
     for (int pass = 0; pass < 2; ++pass)
@@ -179,7 +170,7 @@ bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below) {
     // Each point located from the faces of the one before, then from the apex's (the walk never
     // crosses a wall, so it must start on the sector's side).
     VertexHandle last = apex;
-    for (const Point2& q : ring) {
+    for (const Point2& q : plan.ring) {
       VertexHandle vh;
       for (VertexHandle from : {last, apex}) {
         for (auto fh : sub.vf_range(from))
@@ -189,10 +180,9 @@ bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below) {
       if (!vh.is_valid() || sub.data(vh).kind != VertexKind::Free) return false;
       last = vh;
     }
-    rebuilt = true;
   }
-  if (rebuilt) make_delaunay(sub);
-  return rebuilt;
+  if (!plans.empty()) make_delaunay(sub);
+  return !plans.empty();
 }
 
 }  // namespace acute::detail

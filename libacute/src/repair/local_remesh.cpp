@@ -126,15 +126,10 @@ struct Sector {
 std::vector<Sector> narrow_sectors(const Mesh& sub, VertexHandle vh, double max_angle) {
   std::vector<Sector> out;
   const Point2 p = point2(sub, vh);
-  // Segments alone are walls; a fan reaching an unconstrained boundary edge (the frozen border) is partial.
-  const WallTest is_wall = [&](HalfedgeHandle spoke) { return is_constrained(sub, sub.edge_handle(spoke)); };
-  for (auto start : sub.voh_range(vh)) {
-    if (!is_wall(start) || sub.is_boundary(start)) continue;
-    const SectorSweep sector = sweep_sector(sub, start, is_wall, 256);
-    if (sector.how == SectorEnd::Wall && sector.radians < max_angle)
-      out.push_back(Sector{{(point2(sub, sub.to_vertex_handle(start)) - p).normalized(), (point2(sub, sub.to_vertex_handle(sector.end)) - p).normalized()},
-                           sector.radians});
-  }
+  for (const SegmentSector& s : segment_sectors(sub, vh))
+    if (s.radians < max_angle)
+      out.push_back(Sector{{(point2(sub, sub.to_vertex_handle(s.first)) - p).normalized(), (point2(sub, sub.to_vertex_handle(s.last)) - p).normalized()},
+                           s.radians});
   return out;
 }
 

@@ -37,20 +37,13 @@ struct FanSector {
 };
 
 /// The sectors at vh between consecutive walls; empty when a fan is partial (a region border) or
-/// vh has fewer than two walls.
+/// vh has fewer than two walls. Directions, not handles: the fan's rebuild removes wall vertices.
 std::vector<FanSector> wall_sectors(const Mesh& mesh, VertexHandle vh) {
+  bool partial = false;
   std::vector<FanSector> out;
-  const WallTest wall = [&](HalfedgeHandle spoke) { return is_wall(mesh, spoke); };
-  int walls = 0;
-  for (auto spoke : mesh.voh_range(vh)) {
-    if (!wall(spoke)) continue;
-    ++walls;
-    if (mesh.is_boundary(spoke)) continue;
-    const SectorSweep sweep = sweep_sector(mesh, spoke, wall, 4096);
-    if (sweep.how != SectorEnd::Wall) return {};
-    out.push_back(FanSector{(point2(mesh, mesh.to_vertex_handle(spoke)) - point2(mesh, vh)).normalized(), sweep.radians});
-  }
-  if (walls < 2) return {};
+  for (const SegmentSector& s : segment_sectors(mesh, vh, &partial))
+    out.push_back(FanSector{(point2(mesh, mesh.to_vertex_handle(s.first)) - point2(mesh, vh)).normalized(), s.radians});
+  if (partial) return {};  // (one wall alone sweeps round to itself: partial too)
   return out;
 }
 

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace acute {
 
@@ -37,5 +38,18 @@ bool is_segment_or_boundary(const Mesh& mesh, HalfedgeHandle spoke);
 /// that is `start` again (Closed), else one is_wall accepts (Wall), else a boundary halfedge
 /// (Border); Unfinished after max_triangles faces. A start without a face: Border, no triangles.
 SectorSweep sweep_sector(const Mesh& mesh, HalfedgeHandle start, const WallTest& is_wall, int max_triangles = 1024);
+
+/// A whole sector at a vertex: the fan between two consecutive segment spokes.
+struct SegmentSector {
+  HalfedgeHandle first, last;  ///< the segment spokes it lies between, counter-clockwise from first to last
+  double radians = 0;
+};
+
+/// The whole sectors at vh between consecutive spokes on input segments (constrained edges; the
+/// domain boundary is made of segments), in the order of vh's outgoing halfedges. A fan that does
+/// not end at a segment spoke (it reaches a mesh boundary that is no segment, e.g. the frozen
+/// border of a region copy, or goes all the way round because vh has one segment) is left out and
+/// sets *partial. The returned handles are valid until the mesh is edited.
+std::vector<SegmentSector> segment_sectors(const Mesh& mesh, VertexHandle vh, bool* partial = nullptr);
 
 }  // namespace acute
