@@ -175,6 +175,27 @@ TEST(ReadDomain, mesh_boundary_becomes_segments_and_holes_get_seeds) {
   }
 }
 
+TEST(ReadDomain, obj_polylines_become_interior_segments) {
+  // tagged_polyline.obj: the 3 x 3 grid of [0,3]^2 with the polyline (1,1) - (2,2) - (1,2) tagged.
+  const Domain d = io::read_domain(data("tagged_polyline.obj"));
+  ASSERT_EQ(d.points.size(), 15u) << "12 boundary vertices and the polyline's 3 interior ones";
+  ASSERT_EQ(d.segments.size(), 14u) << "12 boundary edges and 2 polyline edges";
+  ASSERT_EQ(d.segment_markers.size(), d.segments.size());
+  auto has_segment = [&](const Point2& a, const Point2& b) {
+    for (const auto& s : d.segments)
+      if ((d.points[s[0]] == a && d.points[s[1]] == b) || (d.points[s[0]] == b && d.points[s[1]] == a)) return true;
+    return false;
+  };
+  EXPECT_TRUE(has_segment(Point2(1, 1), Point2(2, 2)));
+  EXPECT_TRUE(has_segment(Point2(2, 2), Point2(1, 2)));
+  // A tagged boundary edge is not a second segment (validate_domain would refuse a repeated one).
+  const std::string path = test::output("tagged_boundary.obj");
+  std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 4\nf 1 4 3\nl 1 2\nl 1 4\n";
+  const Domain e = io::read_domain(path);
+  EXPECT_EQ(e.points.size(), 4u);
+  EXPECT_EQ(e.segments.size(), 5u) << "4 boundary edges and the diagonal";
+}
+
 TEST(ReadDomain, point_set_node_file_means_convex_hull) {
   const std::string path = test::output("points_only.node");
   std::ofstream(path) << "3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n";

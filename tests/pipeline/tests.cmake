@@ -6,4 +6,5 @@ acute_add_test(pipeline_tests
     pipeline/segment_rounding_test.cpp
     pipeline/resource_bounds_test.cpp
     pipeline/convex_hull_test.cpp
+    pipeline/mesh_domain_test.cpp
   LIBS acute_pipeline acute_io nlohmann_json::nlohmann_json)

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <fstream>
 #include <numeric>
+#include <set>
 #include <sstream>
 
 namespace acute::io {
@@ -234,9 +235,12 @@ std::vector<PointOnSegment> find_points_on_segments(const Domain& d) {
   return found;
 }
 
-Domain domain_of_mesh(const Mesh& mesh) {
+namespace {
+
+/// domain_of_mesh, and the domain point of each mesh vertex (-1: none).
+Domain domain_of_mesh(const Mesh& mesh, std::vector<int>& index) {
   Domain d;
-  std::vector<int> index(mesh.n_vertices(), -1);
+  index.assign(mesh.n_vertices(), -1);
   std::vector<VertexHandle> boundary_vertices;
   for (auto vh : mesh.vertices()) {  // skips deleted ones
     if (!mesh.is_boundary(vh) || mesh.is_isolated(vh)) continue;
@@ -288,6 +292,36 @@ Domain domain_of_mesh(const Mesh& mesh) {
   return d;
 }
 
+/// The edges the mesh file tags (OBJ polylines) become segments of its domain, their vertices
+/// points; a tagged boundary edge is a segment already.
+void add_tagged_segments(const std::string& path, const Mesh& mesh, const std::vector<int>& point_of_vertex, Domain& d) {
+  std::vector<int> index = point_of_vertex;
+  std::set<std::pair<int, int>> have;
+  for (const auto& s : d.segments) have.insert(std::minmax(s[0], s[1]));
+  auto point_of = [&](int v) {
+    if (static_cast<std::size_t>(v) >= index.size()) throw InvalidInput(path + ": polyline vertex " + std::to_string(v + 1) + " is not a mesh vertex");
+    if (index[v] < 0) {
+      index[v] = static_cast<int>(d.points.size());
+      d.points.push_back(point2(mesh, VertexHandle(v)));
+      d.point_markers.push_back(mesh.data(VertexHandle(v)).marker);
+    }
+    return index[v];
+  };
+  for (const TaggedEdge& t : read_tagged_edges(path)) {
+    const int a = point_of(t.vertices[0]), b = point_of(t.vertices[1]);
+    if (!have.insert(std::minmax(a, b)).second) continue;
+    d.segments.push_back({a, b});
+    d.segment_markers.push_back(0);
+  }
+}
+
+}  // namespace
+
+Domain domain_of_mesh(const Mesh& mesh) {
+  std::vector<int> index;
+  return domain_of_mesh(mesh, index);
+}
+
 Domain read_domain(const std::string& path, const WarningSink& warn, const ReadOptions& options) {
   const std::string ext = detail::extension_of(path);
   if (ext == ".poly") return read_poly(path, warn, options);
@@ -309,7 +343,10 @@ Domain read_domain(const std::string& path, const WarningSink& warn, const ReadO
     return d;
   }
   if (is_mesh_path(path)) {
-    Domain d = domain_of_mesh(read_mesh(path, warn));
+    const Mesh mesh = read_mesh(path, warn);
+    std::vector<int> point_of_vertex;
+    Domain d = domain_of_mesh(mesh, point_of_vertex);
+    add_tagged_segments(path, mesh, point_of_vertex, d);
     d.name = detail::stem_of(path);
     d.source_path = path;
     validate_domain(d);
