@@ -2,6 +2,7 @@
 #include <acute/mesher.h>
 #include <acute/ops/insert.h>
 #include <acute/repair/angle_bounds.h>
+#include <acute/repair/relocation.h>
 
 #include "repair/hub_ring.h"
 #include "repair/polar_fan.h"
@@ -112,6 +113,7 @@ TEST(EqualiseStripApexes, the_apex_triangles_become_isosceles_and_their_wall_ver
   detail::equalise_strip_apexes(sub, h.apex, kStrip);
   const auto forced = forced_corner_vertices(sub, 30);
   int strips = 0;
+  std::vector<std::pair<VertexHandle, VertexHandle>> bases;  // of the strips' apex triangles
   for (auto fh : sub.vf_range(h.apex)) {
     const auto p = face_points(sub, fh);
     const auto a = angles_deg(p[0], p[1], p[2]);
@@ -121,17 +123,38 @@ TEST(EqualiseStripApexes, the_apex_triangles_become_isosceles_and_their_wall_ver
     if (walls < 2) continue;
     ++strips;
     EXPECT_LT(std::max({a[0], a[1], a[2]}), 90);
+    std::vector<VertexHandle> base;
     for (auto vh : sub.fv_range(fh)) {
       if (vh != h.apex) {
-        EXPECT_TRUE(closes_strip_apex(sub, vh, forced)) << "relocation leaves it where it is";
+        EXPECT_TRUE(closes_strip_apex(sub, vh, forced, 30)) << "relocation leaves it where it is";
+        base.push_back(vh);
       }
     }
+    bases.push_back({base[0], base[1]});
   }
   EXPECT_EQ(strips, 2);
+  // Still pinned once an edit has split the apex triangle's base (the strip is then a fan of two
+  // triangles at the apex): la's apex triangle went obtuse that way.
+  {
+    Mesh split = sub;
+    for (const auto& [b0, b1] : bases) {
+      const auto heh = split.find_halfedge(b0, b1);
+      ASSERT_TRUE(heh.is_valid());
+      ASSERT_TRUE(split_edge(split, split.edge_handle(heh), 0.5 * (point2(split, b0) + point2(split, b1))).is_valid());
+    }
+    const auto split_forced = forced_corner_vertices(split, 30);
+    for (const auto& [b0, b1] : bases)
+      for (VertexHandle vh : {b0, b1}) {
+        EXPECT_TRUE(closes_strip_apex(split, vh, split_forced, 30));
+        const Point2 before = point2(split, vh);
+        EXPECT_FALSE(relocate_for_angles(split, vh, AngleBounds{}, split_forced));
+        EXPECT_EQ(point2(split, vh), before);
+      }
+  }
   // A wall vertex not at the hub moves freely.
   for (auto vh : sub.vertices()) {
     if (!sub.status(vh).deleted() && sub.data(vh).kind == VertexKind::OnSegment && !sub.find_halfedge(vh, h.apex).is_valid()) {
-      EXPECT_FALSE(closes_strip_apex(sub, vh, forced));
+      EXPECT_FALSE(closes_strip_apex(sub, vh, forced, 30));
     }
   }
   test::expect_commit_keeps_the_mesh(h.mesh, h.region, sub, h.area);

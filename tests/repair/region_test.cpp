@@ -62,5 +62,44 @@ TEST(Region, edits_in_the_copy_never_touch_the_frozen_border) {
   test::expect_commit_keeps_the_mesh(mesh, region, sub, area);
 }
 
+TEST(Region, an_input_vertex_in_the_region_keeps_its_handle_and_its_forced_flag) {
+  // The forced-corner flags are indexed by handle: an input vertex that a commit deleted and
+  // re-added came back unflagged, and the clusters after it in the same iteration scored the
+  // forced corner's thin triangles as bad.
+  Domain d;
+  d.points = {Point2(0, 0), Point2(4, 0), Point2(4, 1)};  // a 14-degree corner at (0, 0)
+  d.segments = {{0, 1}, {1, 2}, {2, 0}};
+  MeshOptions options;
+  options.method = Method::Cvt;
+  options.target_vertices = 200;
+  Mesh mesh = generate_mesh(d, options).mesh;
+  const auto forced = forced_corner_vertices(mesh, 30);
+  VertexHandle corner;
+  for (auto vh : mesh.vertices())
+    if (point2(mesh, vh) == Point2(0, 0)) corner = vh;
+  ASSERT_TRUE(corner.is_valid());
+  ASSERT_TRUE(forced[static_cast<std::size_t>(corner.idx())]);
+  std::vector<VertexHandle> movable{corner};
+  for (auto w : mesh.vv_range(corner)) movable.push_back(w);
+  detail::Region region;
+  ASSERT_TRUE(detail::extract_region(mesh, movable, forced, region));
+  VertexHandle in_copy;
+  for (auto vh : region.sub.vertices())
+    if (point2(region.sub, vh) == Point2(0, 0)) in_copy = vh;
+  ASSERT_TRUE(in_copy.is_valid());
+  EXPECT_TRUE(region.forced[static_cast<std::size_t>(in_copy.idx())]) << "flagged in the copy";
+  EXPECT_EQ(region.to_big[static_cast<std::size_t>(in_copy.idx())], corner) << "mapped to its big-mesh handle";
+  detail::commit_region(mesh, region, region.sub);
+  EXPECT_FALSE(mesh.status(corner).deleted()) << "not deleted and re-added";
+  EXPECT_EQ(point2(mesh, corner), Point2(0, 0));
+  EXPECT_FALSE(mesh.is_isolated(corner));
+  mesh.garbage_collection();
+  EXPECT_MESH_VALID(mesh);
+  const auto after = forced_corner_vertices(mesh, 30);
+  std::size_t flagged = 0;
+  for (auto vh : mesh.vertices()) flagged += after[static_cast<std::size_t>(vh.idx())] && point2(mesh, vh) == Point2(0, 0);
+  EXPECT_EQ(flagged, 1u);
+}
+
 }  // namespace
 }  // namespace acute

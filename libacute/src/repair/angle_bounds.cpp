@@ -115,23 +115,23 @@ bool is_bad_triangle(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds,
   return triangle_margin(mesh, fh, bounds, exempt) < bounds.margin_deg;
 }
 
-bool closes_strip_apex(const Mesh& mesh, VertexHandle vh, const std::vector<bool>& forced) {
+bool closes_strip_apex(const Mesh& mesh, VertexHandle vh, const std::vector<bool>& forced, double strip_below_deg) {
   if (mesh.data(vh).kind != VertexKind::OnSegment) return false;
+  constexpr double kPi = 3.14159265358979323846;
   auto is_forced = [&](VertexHandle v) {
     const auto i = static_cast<std::size_t>(v.idx());
     return i < forced.size() && forced[i];
   };
   for (auto spoke : mesh.voh_range(vh)) {
     const VertexHandle apex = mesh.to_vertex_handle(spoke);
-    // Walls are segments (the domain boundary included): in a region copy the frozen border's
-    // edges are boundary edges too, and no strip.
     if (!is_input(mesh, apex) || !is_forced(apex) || !is_constrained(mesh, mesh.edge_handle(spoke))) continue;
-    for (HalfedgeHandle side : {spoke, mesh.opposite_halfedge_handle(spoke)}) {
-      if (mesh.is_boundary(side)) continue;
-      // The triangle's edge at the apex other than (apex, vh).
-      const HalfedgeHandle other = side == spoke ? mesh.next_halfedge_handle(side) : mesh.prev_halfedge_handle(side);
-      if (is_constrained(mesh, mesh.edge_handle(other))) return true;
-    }
+    // The strip on either side of the wall (apex, vh), whatever lies inside it now (a split of the
+    // apex triangle's base leaves it a fan of two). Walls are segments only: in a region copy the
+    // frozen border's edges are boundary edges too, and bound no strip; a fan that reaches the
+    // border is partial and left out.
+    const HalfedgeHandle wall = mesh.opposite_halfedge_handle(spoke);
+    for (const SegmentSector& s : segment_sectors(mesh, apex))
+      if ((s.first == wall || s.last == wall) && s.radians < strip_below_deg * kPi / 180) return true;
   }
   return false;
 }

@@ -32,7 +32,7 @@ Patch make_patch(const Mesh& mesh, const std::vector<VertexHandle>& vertices, co
     const auto& d = mesh.data(vh);
     Point2 axis(0, 0);
     std::array<Point2, 2> ends{};
-    if (closes_strip_apex(mesh, vh, forced)) continue;  // fixed: see angle_bounds.h
+    if (closes_strip_apex(mesh, vh, forced, min_deg)) continue;  // fixed: see angle_bounds.h
     if (d.kind == VertexKind::Input) {
       if (movable_only) continue;
     } else if (d.kind == VertexKind::OnSegment) {

@@ -91,8 +91,11 @@ bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const st
       slot = sub.add_vertex(big.point(vh));
       sub.data(slot) = big.data(vh);
       const bool frozen = !is_movable[static_cast<std::size_t>(vh.idx())];
+      // An input vertex never moves or goes: it keeps its handle, which the forced-corner flags
+      // (indexed by handle) and the callers' lists of input vertices rely on.
+      const bool kept = frozen || is_input(big, vh);
       if (frozen) sub.data(slot).kind = VertexKind::Input;
-      region.to_big.push_back(frozen ? vh : VertexHandle());
+      region.to_big.push_back(kept ? vh : VertexHandle());
       const auto i = static_cast<std::size_t>(vh.idx());
       region.forced.push_back(i < big_forced.size() && big_forced[i]);
       to_sub.at(i) = slot;
@@ -124,7 +127,7 @@ std::vector<VertexHandle> commit_region(Mesh& big, const Region& region, const M
   for (auto fh : region.big_faces)
     if (!big.status(fh).deleted()) big.delete_face(fh, false);
   for (auto vh : region.big_inner)
-    if (!big.status(vh).deleted()) big.delete_vertex(vh, false);
+    if (!big.status(vh).deleted() && !is_input(big, vh)) big.delete_vertex(vh, false);
   std::vector<VertexHandle> to_big(sub.n_vertices());
   std::vector<VertexHandle> created;
   for (auto vh : sub.vertices()) {

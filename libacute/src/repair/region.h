@@ -15,7 +15,7 @@ namespace acute::detail {
 
 struct Region {
   Mesh sub;                             ///< the copy; frozen ring vertices are Input
-  std::vector<VertexHandle> to_big;     ///< sub vertex index -> big vertex (frozen ones only)
+  std::vector<VertexHandle> to_big;     ///< sub vertex index -> big vertex (frozen and input ones only)
   std::vector<bool> forced;             ///< forced-corner flags by sub vertex index
   std::vector<FaceHandle> big_faces;    ///< faces of the big mesh the region replaces
   std::vector<VertexHandle> big_inner;  ///< movable vertices of the big mesh
@@ -26,7 +26,8 @@ struct Region {
 bool extract_region(const Mesh& big, std::vector<VertexHandle> movable, const std::vector<bool>& big_forced, Region& region);
 
 /// Replaces the region's faces in the big mesh by those of `sub` (a modified copy of region.sub
-/// whose frozen vertices are unchanged). Returns the big-mesh handles of sub's non-frozen vertices.
+/// whose frozen vertices are unchanged). Input vertices keep their big-mesh handles. Returns the
+/// big-mesh handles of sub's other (new or re-added) vertices.
 std::vector<VertexHandle> commit_region(Mesh& big, const Region& region, const Mesh& sub);
 
 }  // namespace acute::detail

@@ -53,7 +53,7 @@ double star_energy(const Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
 
 bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds, const std::vector<bool>& forced) {
   const auto& data = mesh.data(vh);
-  if (data.kind == VertexKind::Input || closes_strip_apex(mesh, vh, forced)) return false;
+  if (data.kind == VertexKind::Input || closes_strip_apex(mesh, vh, forced, bounds.min_deg)) return false;
   // A star whose every angle is this far inside the bounds has nothing to gain: its energy terms
   // are below exp(-6) each, and a move changes no angle outside the star. (Most of a CVT mesh is
   // such stars; the pattern search would spend up to 240 evaluations on each.)

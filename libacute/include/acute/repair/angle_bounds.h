@@ -35,12 +35,14 @@ double sector_angle(const Mesh& mesh, VertexHandle vh, FaceHandle fh);
 /// that a small angle at a forced vertex in one of its wide sectors still gets pushed up.
 bool min_exempt_corner(const Mesh& mesh, VertexHandle vh, FaceHandle fh, double min_deg, const std::vector<bool>& forced);
 
-/// True when vh (a Steiner vertex on a wall) is a corner of a strip's apex triangle: a triangle at a
-/// forced corner whose other two edges at that corner are both walls. With a strip angle theta
-/// its base angles are 90 - theta / 2, so a slide of either wall vertex by a fraction of theta / 2 of
+/// True when vh (a Steiner vertex on a wall) is the first vertex of a strip's wall: joined by a
+/// segment edge to a forced corner where a sector beside that edge is narrower than
+/// strip_below_deg (a strip). The strip's apex triangle is isosceles; with a strip angle theta its
+/// base angles are 90 - theta / 2, so a slide of either wall vertex by a fraction of theta / 2 of
 /// its radius makes it obtuse, and no single-vertex move can bring the pair back; such vertices
-/// stay where the start (or the hub ring) put them.
-bool closes_strip_apex(const Mesh& mesh, VertexHandle vh, const std::vector<bool>& forced);
+/// stay where the start (or the hub ring) put them, even where an edit has split the apex
+/// triangle's base.
+bool closes_strip_apex(const Mesh& mesh, VertexHandle vh, const std::vector<bool>& forced, double strip_below_deg);
 
 /// How far triangle fh is from the bounds: the smallest margin min(angle - min, max - angle) over
 /// its angles, in degrees (negative when bad). `exempt_min` drops the min-bound part.
