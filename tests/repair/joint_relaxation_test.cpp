@@ -5,6 +5,7 @@
 #include <acute/repair/joint_relaxation.h>
 
 #include "support/builders.h"
+#include "support/wedge_domains.h"
 
 #include <gtest/gtest.h>
 
@@ -91,9 +92,7 @@ Domain split_wedge() {
 TEST(SectorAngle, sectors_at_a_corner_with_an_interior_segment) {
   const Mesh mesh = build_domain_cdt(split_wedge());
   const auto forced = forced_corner_vertices(mesh, 30);
-  VertexHandle apex;
-  for (auto vh : mesh.vertices())
-    if (point2(mesh, vh) == Point2(0, 0)) apex = vh;
+  const VertexHandle apex = test::vertex_at(mesh, Point2(0, 0));
   ASSERT_TRUE(apex.is_valid());
   ASSERT_TRUE(forced[static_cast<std::size_t>(apex.idx())]);
   int narrow = 0, wide = 0;

@@ -5,6 +5,7 @@
 #include "repair/region.h"
 #include "support/mesh_verify.h"
 #include "support/region_verify.h"
+#include "support/wedge_domains.h"
 
 namespace acute {
 namespace {
@@ -74,18 +75,14 @@ TEST(Region, an_input_vertex_in_the_region_keeps_its_handle_and_its_forced_flag)
   options.target_vertices = 200;
   Mesh mesh = generate_mesh(d, options).mesh;
   const auto forced = forced_corner_vertices(mesh, 30);
-  VertexHandle corner;
-  for (auto vh : mesh.vertices())
-    if (point2(mesh, vh) == Point2(0, 0)) corner = vh;
+  const VertexHandle corner = test::vertex_at(mesh, Point2(0, 0));
   ASSERT_TRUE(corner.is_valid());
   ASSERT_TRUE(forced[static_cast<std::size_t>(corner.idx())]);
   std::vector<VertexHandle> movable{corner};
   for (auto w : mesh.vv_range(corner)) movable.push_back(w);
   detail::Region region;
   ASSERT_TRUE(detail::extract_region(mesh, movable, forced, region));
-  VertexHandle in_copy;
-  for (auto vh : region.sub.vertices())
-    if (point2(region.sub, vh) == Point2(0, 0)) in_copy = vh;
+  const VertexHandle in_copy = test::vertex_at(region.sub, Point2(0, 0));
   ASSERT_TRUE(in_copy.is_valid());
   EXPECT_TRUE(region.forced[static_cast<std::size_t>(in_copy.idx())]) << "flagged in the copy";
   EXPECT_EQ(region.to_big[static_cast<std::size_t>(in_copy.idx())], corner) << "mapped to its big-mesh handle";
