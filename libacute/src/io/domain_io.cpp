@@ -12,6 +12,7 @@
 #include <numeric>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace acute::io {
 
@@ -294,8 +295,7 @@ Domain domain_of_mesh(const Mesh& mesh, std::vector<int>& index) {
 
 /// The edges the mesh file tags (OBJ polylines) become segments of its domain, their vertices
 /// points; a tagged boundary edge is a segment already.
-void add_tagged_segments(const std::string& path, const Mesh& mesh, const std::vector<int>& point_of_vertex, Domain& d) {
-  std::vector<int> index = point_of_vertex;
+void add_tagged_segments(const std::string& path, const Mesh& mesh, std::vector<int> index, Domain& d) {
   std::set<std::pair<int, int>> have;
   for (const auto& s : d.segments) have.insert(std::minmax(s[0], s[1]));
   auto point_of = [&](int v) {
@@ -346,7 +346,7 @@ Domain read_domain(const std::string& path, const WarningSink& warn, const ReadO
     const Mesh mesh = read_mesh(path, warn);
     std::vector<int> point_of_vertex;
     Domain d = domain_of_mesh(mesh, point_of_vertex);
-    add_tagged_segments(path, mesh, point_of_vertex, d);
+    add_tagged_segments(path, mesh, std::move(point_of_vertex), d);
     d.name = detail::stem_of(path);
     d.source_path = path;
     validate_domain(d);
