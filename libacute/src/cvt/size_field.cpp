@@ -13,6 +13,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <queue>
 #include <tuple>
 
@@ -68,6 +69,17 @@ void SizeField::update_range() {
       min_ = std::min(min_, values_[static_cast<std::size_t>(v)]);
       max_ = std::max(max_, values_[static_cast<std::size_t>(v)]);
     }
+}
+
+SizeField SizeField::with_values(std::vector<double> values) const {
+  if (is_uniform() || values.size() != points_.size()) throw InvalidInput("size field: one value per background point is needed");
+  SizeField f;
+  f.points_ = points_;
+  f.triangles_ = triangles_;
+  f.neighbours_ = neighbours_;
+  f.values_ = std::move(values);
+  f.update_range();
+  return f;
 }
 
 void SizeField::scale(double factor) {
@@ -310,37 +322,64 @@ class FeatureGrid {
   std::vector<int> start_, items_;
 };
 
-/// Dijkstra from the smallest sizes: values[w] <= values[v] + slope |vw| along every edge.
-void grade(const std::vector<Point2>& points, const std::vector<std::array<int, 3>>& triangles, std::vector<double>& values, double slope) {
-  // Adjacency in compressed rows (each interior edge twice per direction: harmless).
-  std::vector<int> start(points.size() + 1, 0), adj(6 * triangles.size());
-  for (const auto& t : triangles)
-    for (int v : t) start[static_cast<std::size_t>(v) + 1] += 2;
-  for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-  {
-    std::vector<int> fill(start.begin(), start.end() - 1);
+/// The edges of a triangulation as compressed rows, each edge once per direction, with lengths:
+/// built once per triangulation, graded many times.
+struct EdgeGraph {
+  std::vector<int> start, adj;
+  std::vector<double> length;
+
+  EdgeGraph(const std::vector<Point2>& points, const std::vector<std::array<int, 3>>& triangles) {
+    // Every corner lists its two neighbours; interior edges come twice and are deduplicated per row.
+    std::vector<int> count(points.size() + 1, 0), raw(6 * triangles.size());
+    for (const auto& t : triangles)
+      for (int v : t) count[static_cast<std::size_t>(v) + 1] += 2;
+    for (std::size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
+    std::vector<int> fill(count.begin(), count.end() - 1);
     for (const auto& t : triangles)
       for (int i = 0; i < 3; ++i) {
         const auto v = static_cast<std::size_t>(t[static_cast<std::size_t>(i)]);
-        adj[static_cast<std::size_t>(fill[v]++)] = t[static_cast<std::size_t>((i + 1) % 3)];
-        adj[static_cast<std::size_t>(fill[v]++)] = t[static_cast<std::size_t>((i + 2) % 3)];
+        raw[static_cast<std::size_t>(fill[v]++)] = t[static_cast<std::size_t>((i + 1) % 3)];
+        raw[static_cast<std::size_t>(fill[v]++)] = t[static_cast<std::size_t>((i + 2) % 3)];
       }
+    start.assign(points.size() + 1, 0);
+    adj.reserve(raw.size() / 2 + points.size());
+    length.reserve(adj.capacity());
+    for (std::size_t v = 0; v < points.size(); ++v) {
+      const auto b = raw.begin() + count[v], e = raw.begin() + count[v + 1];
+      std::sort(b, e);
+      for (auto it = b; it != e; ++it) {
+        if (it != b && *it == *(it - 1)) continue;
+        adj.push_back(*it);
+        length.push_back((points[static_cast<std::size_t>(*it)] - points[v]).norm());
+      }
+      start[v + 1] = static_cast<int>(adj.size());
+    }
   }
+};
+
+/// Dijkstra from the smallest sizes: values[w] <= values[v] + slope |vw| along every edge.
+void grade(const EdgeGraph& graph, std::vector<double>& values, double slope) {
   using Item = std::pair<double, int>;
+  // The result is the min-plus closure of the values, so only vertices that lower a neighbour
+  // need to start in the queue (the others enter when lowered): most samples and grid points don't.
   std::vector<Item> heap;
-  heap.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) heap.emplace_back(values[i], static_cast<int>(i));
+  for (std::size_t v = 0; v < values.size(); ++v)
+    for (int k = graph.start[v]; k < graph.start[v + 1]; ++k)
+      if (values[v] + slope * graph.length[static_cast<std::size_t>(k)] < values[static_cast<std::size_t>(graph.adj[static_cast<std::size_t>(k)])]) {
+        heap.emplace_back(values[v], static_cast<int>(v));
+        break;
+      }
   std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue(std::greater<Item>(), std::move(heap));
-  std::vector<char> done(points.size(), 0);
+  std::vector<char> done(values.size(), 0);
   while (!queue.empty()) {
     const auto [h, v] = queue.top();
     queue.pop();
     if (done[static_cast<std::size_t>(v)] || h > values[static_cast<std::size_t>(v)]) continue;
     done[static_cast<std::size_t>(v)] = 1;
-    for (int k = start[static_cast<std::size_t>(v)]; k < start[static_cast<std::size_t>(v) + 1]; ++k) {
-      const int w = adj[static_cast<std::size_t>(k)];
+    for (int k = graph.start[static_cast<std::size_t>(v)]; k < graph.start[static_cast<std::size_t>(v) + 1]; ++k) {
+      const int w = graph.adj[static_cast<std::size_t>(k)];
       if (done[static_cast<std::size_t>(w)]) continue;
-      const double hw = h + slope * (points[static_cast<std::size_t>(w)] - points[static_cast<std::size_t>(v)]).norm();
+      const double hw = h + slope * graph.length[static_cast<std::size_t>(k)];
       if (hw < values[static_cast<std::size_t>(w)]) {
         values[static_cast<std::size_t>(w)] = hw;
         queue.emplace(hw, w);
@@ -369,7 +408,7 @@ void add_grading_points(LfsSamples& samples, double gradation, double hmax) {
   for (int round = 0; round < kRounds; ++round) {
     const auto triangles = delaunay_triangles(points);
     for (std::size_t i = n_samples; i < points.size(); ++i) values[i] = hmax;
-    grade(points, triangles, values, slope);
+    grade(EdgeGraph(points, triangles), values, slope);
     const std::size_t before = points.size();
     // Each edge once, hull edges included (they have one triangle, in either orientation).
     std::vector<std::pair<std::size_t, std::size_t>> edges;
@@ -403,38 +442,58 @@ void add_grading_points(LfsSamples& samples, double gradation, double hmax) {
   }
 }
 
-/// The graded field from lfs samples: values clamp(lfs_factor * lfs, hmin, hmax), a grid at about hmax,
-/// then gradation-limited along the Delaunay edges of those points.
-SizeField graded_field(const LfsSamples& samples, const DomainMeasures& dm, double lfs_factor, double hmin, double hmax, double gradation) {
-  const double slope = std::max(gradation - 1.0, 0.0);
-  const double inf = std::numeric_limits<double>::infinity();
-  std::vector<Point2> points;
-  std::vector<double> values;
-  points.reserve(samples.points.size());
-  values.reserve(samples.points.size());
-  for (std::size_t i = 0; i < samples.points.size(); ++i) {
-    if (!(samples.lfs[i] < inf)) continue;
-    points.push_back(samples.points[i]);
-    values.push_back(std::clamp(lfs_factor * samples.lfs[i], hmin, hmax));
+/// Graded fields from lfs samples: values clamp(lfs_factor * lfs, hmin, hmax) at the samples, hmax
+/// on a grid at about hmax (the size can grow away from the features), then gradation-limited
+/// along the Delaunay edges of those points. The triangulation depends only on the grid step, so
+/// the fits of make_size_field (several factors or caps in a row) triangulate once per step.
+class GradedFields {
+ public:
+  GradedFields(const LfsSamples& samples, const DomainMeasures& dm, double gradation)
+      : dm_(dm), slope_(std::max(gradation - 1.0, 0.0)) {
+    const double inf = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < samples.points.size(); ++i) {
+      const Point2& p = samples.points[i];
+      lo_ = lo_.cwiseMin(p), hi_ = hi_.cwiseMax(p);
+      if (!(samples.lfs[i] < inf)) continue;
+      points_.push_back(p);
+      lfs_.push_back(samples.lfs[i]);
+    }
   }
-  // A coarse grid at hmax lets the size grow away from the features.
-  {
-    double xmin = inf, ymin = inf, xmax = -inf, ymax = -inf;
-    for (const Point2& p : samples.points) xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x()), ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
+
+  SizeField make(double lfs_factor, double hmin, double hmax) {
     // Fine enough that the size can grow between the features (values in between are linear).
-    const double step = std::clamp(hmax, dm.diameter / 200.0, dm.diameter / 50.0);
-    const int nx = static_cast<int>(std::floor((xmax - xmin) / step)), ny = static_cast<int>(std::floor((ymax - ymin) / step));
-    const double ox = xmin + 0.5 * ((xmax - xmin) - nx * step), oy = ymin + 0.5 * ((ymax - ymin) - ny * step);
-    for (int j = 1; j < ny; ++j)
-      for (int i = 1; i < nx; ++i) {
-        points.emplace_back(ox + i * step, oy + j * step);
-        values.push_back(hmax);
-      }
+    const double step = std::clamp(hmax, dm_.diameter / 200.0, dm_.diameter / 50.0);
+    if (step != step_) triangulate(step);
+    std::vector<double> values(background_.background_points().size(), hmax);
+    for (std::size_t i = 0; i < lfs_.size(); ++i) values[i] = std::clamp(lfs_factor * lfs_[i], hmin, hmax);
+    grade(*graph_, values, slope_);
+    return background_.with_values(std::move(values));
   }
-  auto triangles = delaunay_triangles(points);
-  grade(points, triangles, values, slope);
-  return SizeField::piecewise_linear(std::move(points), std::move(triangles), std::move(values));
-}
+
+ private:
+  void triangulate(double step) {
+    std::vector<Point2> points = points_;
+    const int nx = static_cast<int>(std::floor((hi_.x() - lo_.x()) / step)), ny = static_cast<int>(std::floor((hi_.y() - lo_.y()) / step));
+    const double ox = lo_.x() + 0.5 * ((hi_.x() - lo_.x()) - nx * step), oy = lo_.y() + 0.5 * ((hi_.y() - lo_.y()) - ny * step);
+    for (int j = 1; j < ny; ++j)
+      for (int i = 1; i < nx; ++i) points.emplace_back(ox + i * step, oy + j * step);
+    auto triangles = delaunay_triangles(points);
+    std::vector<double> values(points.size(), 1.0);
+    graph_ = std::make_unique<EdgeGraph>(points, triangles);
+    background_ = SizeField::piecewise_linear(std::move(points), std::move(triangles), std::move(values));
+    step_ = step;
+  }
+
+  DomainMeasures dm_;
+  double slope_;
+  Point2 lo_{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  Point2 hi_{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  std::vector<Point2> points_;  ///< the samples with a finite lfs
+  std::vector<double> lfs_;
+  double step_ = -1;
+  SizeField background_;  ///< samples + grid at step_, triangulated
+  std::unique_ptr<EdgeGraph> graph_;  ///< background_'s edges
+};
 
 }  // namespace
 
@@ -509,7 +568,7 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
   LfsSamples samples = local_feature_size_samples(cdt, hmax);
   if (past_abandon_time(params, start)) return SizeField::uniform(hmax);
   add_grading_points(samples, params.gradation, hmax);
-  return graded_field(samples, dm, params.lfs_factor, hmin, hmax, params.gradation);
+  return GradedFields(samples, dm, params.gradation).make(params.lfs_factor, hmin, hmax);
 }
 
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) {
@@ -533,7 +592,8 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) 
     if (past_abandon_time(params, start)) return SizeField::uniform(hn);
     add_grading_points(samples, params.gradation, hn);
     if (past_abandon_time(params, start)) return SizeField::uniform(hn);
-    auto field_at = [&](double hmax) { return graded_field(samples, dm, params.lfs_factor, hmin, hmax, params.gradation); };
+    GradedFields fields(samples, dm, params.gradation);
+    auto field_at = [&](double hmax) { return fields.make(params.lfs_factor, hmin, hmax); };
     const double top = std::max(hn, dm.diameter);
     SizeField ft = field_at(top);
     const double at_top = predicted_vertex_count(input_cdt, ft);
@@ -544,11 +604,16 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) 
       double cap = kMaxExcess * target;
       if (params.max_vertices > 0) cap = std::min(cap, static_cast<double>(params.max_vertices));
       if (at_top <= cap) return ft;
-      double lambda = params.lfs_factor, count = at_top;
+      // Secant steps on log(count) against log(lambda): the exponent starts at the area's 2 and is
+      // then measured (the boundary's 1 / lambda share and the hmin clamp make it smaller; debug2
+      // at 2k vertices has 0.9, where assuming 2 left it 25% over after five steps).
+      double lambda = params.lfs_factor, count = at_top, exponent = 2.0;
       for (int k = 0; k < 5 && std::abs(count / cap - 1.0) >= 0.1; ++k) {  // not cut by time: the first fields are the finest
-        lambda *= std::sqrt(count / cap);
-        ft = graded_field(samples, dm, lambda, hmin, top, params.gradation);
+        const double last_lambda = lambda, last_count = count;
+        lambda *= std::pow(count / cap, 1.0 / exponent);
+        ft = fields.make(lambda, hmin, top);
         count = predicted_vertex_count(input_cdt, ft);
+        if (count < last_count) exponent = std::clamp(std::log(last_count / count) / std::log(lambda / last_lambda), 0.5, 2.0);
       }
       return ft;
     }

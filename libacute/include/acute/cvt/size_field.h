@@ -35,6 +35,9 @@ class SizeField {
   }
   /// Multiplies every value by factor (> 0).
   void scale(double factor);
+  /// The same background triangulation with other values, one per background point (the
+  /// adjacency is shared work: refitting a field costs no triangulation).
+  SizeField with_values(std::vector<double> values) const;
   double min_value() const { return min_; }
   double max_value() const { return max_; }
 
