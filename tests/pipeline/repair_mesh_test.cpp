@@ -15,7 +15,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -180,6 +182,91 @@ TEST(RepairMesh, fine_input_keeps_its_resolution) {
   expect_repaired(in, r, "grid_mesh(30)");
   EXPECT_GE(r.n_vertices, in.n_vertices() * 8 / 10);
   EXPECT_LE(r.n_vertices, in.n_vertices() * 13 / 10);
+}
+
+/// A hexagon of side r cut into equilateral triangles (every angle 60 degrees); `push` moves the
+/// first interior vertex right by that much (a few triangles become obtuse).
+Mesh hexagon_lattice(int r, double push = 0) {
+  std::vector<Point2> pts;
+  std::map<std::pair<int, int>, int> index;
+  for (int b = -r; b <= r; ++b)
+    for (int a = -r; a <= r; ++a)
+      if (std::abs(a + b) <= r) {
+        index[{a, b}] = static_cast<int>(pts.size());
+        pts.emplace_back(a + 0.5 * b, b * std::sqrt(3.0) / 2.0);
+      }
+  if (push != 0) pts[index.at({0, 0})] += Point2(push, 0.0);
+  std::vector<std::array<int, 3>> tris;
+  auto add = [&](std::pair<int, int> x, std::pair<int, int> y, std::pair<int, int> z) {
+    if (index.count(x) && index.count(y) && index.count(z)) tris.push_back({index[x], index[y], index[z]});
+  };
+  for (int b = -r; b <= r; ++b)
+    for (int a = -r; a <= r; ++a) {
+      add({a, b}, {a + 1, b}, {a, b + 1});
+      add({a + 1, b}, {a + 1, b + 1}, {a, b + 1});
+    }
+  return make_mesh(pts, tris);
+}
+
+bool same_vertices_and_faces(const Mesh& a, const Mesh& b) {
+  if (a.n_vertices() != b.n_vertices() || a.n_faces() != b.n_faces()) return false;
+  for (auto vh : a.vertices())
+    if (point2(a, vh) != point2(b, vh)) return false;
+  std::set<std::array<int, 3>> fa, fb;
+  for (auto fh : a.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (auto v : a.fv_range(fh)) t[static_cast<std::size_t>(k++)] = v.idx();
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    fa.insert(t);
+  }
+  for (auto fh : b.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (auto v : b.fv_range(fh)) t[static_cast<std::size_t>(k++)] = v.idx();
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    fb.insert(t);
+  }
+  return fa == fb;
+}
+
+TEST(RepairMesh, an_input_within_the_bounds_comes_back_unchanged) {
+  const Mesh in = hexagon_lattice(3);
+  RepairMeshOptions o;
+  o.features = {{0, 1}};  // a boundary edge given as a feature changes nothing
+  RepairMeshResult r = repair_mesh(in, o);
+  expect_repaired(in, r, "hexagon_lattice(3)");
+  EXPECT_TRUE(same_vertices_and_faces(in, r.mesh));
+  EXPECT_EQ(r.iterations, 0);
+  // Tighter bounds than its 60 degrees: it is remeshed.
+  o.min_angle_deg = 61;
+  o.max_angle_deg = 89;
+  EXPECT_THROW(repair_mesh(in, o), InvalidInput);  // unsatisfiable: some angle is <= 60
+  // A size asked for: remeshed at that size.
+  RepairMeshOptions sized;
+  sized.size = 0.25;
+  r = repair_mesh(in, sized);
+  expect_repaired(in, r, "hexagon_lattice(3) at size 0.25");
+  EXPECT_GT(r.n_vertices, 4 * in.n_vertices());
+}
+
+TEST(RepairMesh, a_repair_cut_short_never_returns_worse_than_its_input) {
+  const Mesh in = hexagon_lattice(4, 0.6);
+  AngleBounds bounds;
+  Mesh marked = in;
+  mark_boundary_as_constrained(marked);
+  const std::size_t bad_in = bad_triangles(marked, bounds).size();
+  ASSERT_GT(bad_in, 0u);
+  ASSERT_LT(bad_in, 6u);
+  RepairMeshOptions o;
+  o.time_limit_s = 1e-9;  // the start is the CDT of the boundary, far worse than the input
+  const RepairMeshResult r = repair_mesh(in, o);
+  expect_repaired(in, r, "hexagon_lattice(4, 0.6) cut short", false);
+  EXPECT_EQ(r.status, RepairMeshStatus::BoundsNotMet);
+  EXPECT_EQ(r.n_bad, bad_in);
+  EXPECT_TRUE(same_vertices_and_faces(in, r.mesh));
+  // Without the limit it is repaired.
+  expect_repaired(in, repair_mesh(in), "hexagon_lattice(4, 0.6)");
 }
 
 TEST(RepairMesh, interior_feature_edges_are_kept) {

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <regex>
 #include <string>
 
@@ -572,13 +573,48 @@ double input_size_cap(const Mesh& mesh) {
   return h < kDefaultMaxSizeRatio * dm.diameter ? h : 0.0;
 }
 
+/// The input itself as a result mesh: the domain's points marked as input vertices (all others
+/// free), every boundary and feature edge a segment of its own. Only where the domain keeps every
+/// boundary vertex (no feature angle) and the region has no isolated vertex.
+std::optional<Mesh> input_as_result(const Mesh& input, const RepairMeshOptions& o, const std::vector<int>& vertex_of_point) {
+  if (o.feature_angle_deg > 0) return std::nullopt;
+  for (auto vh : input.vertices())
+    if (input.is_isolated(vh)) return std::nullopt;
+  Mesh m = input;
+  for (auto vh : m.vertices()) {
+    auto& d = m.data(vh);
+    d.kind = VertexKind::Free, d.segment = -1, d.input_index = -1;
+  }
+  for (std::size_t k = 0; k < vertex_of_point.size(); ++k) {
+    auto& d = m.data(VertexHandle(vertex_of_point[k]));
+    d.kind = VertexKind::Input;
+    d.input_index = static_cast<int>(k);
+  }
+  std::vector<char> feature(m.n_edges(), 0);
+  for (const auto& f : o.features) feature[static_cast<std::size_t>(m.edge_handle(m.find_halfedge(VertexHandle(f[0]), VertexHandle(f[1]))).idx())] = 1;
+  SegmentTable table;
+  for (auto eh : m.edges()) {
+    auto& d = m.data(eh);
+    d.segment = -1, d.frozen = false;
+    if (!m.is_boundary(eh) && !feature[static_cast<std::size_t>(eh.idx())]) continue;
+    const auto h = m.halfedge_handle(eh, 0);
+    d.segment = static_cast<int>(table.size());
+    table.push_back({point2(m, m.from_vertex_handle(h)), point2(m, m.to_vertex_handle(h))});
+  }
+  for (auto vh : m.vertices())
+    if (m.is_boundary(vh) && m.data(vh).kind != VertexKind::Input) return std::nullopt;  // the domain dropped it
+  set_segment_table(m, std::move(table));
+  return m;
+}
+
 }  // namespace
 
 RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options) {
   check_options(options);
   notify(options, "check");
   check_repairable(input);
-  Domain domain = repair_domain(input, options);
+  std::vector<int> vertex_of_point;
+  Domain domain = repair_domain(input, options, &vertex_of_point);
   if (options.keep_vertices) {
     RepairMeshResult r = repair_required_points(domain, options);
     r.n_input_vertices = input.n_vertices();
@@ -588,6 +624,22 @@ RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options
   RepairMeshResult r;
   r.domain = std::move(domain);
   r.n_input_vertices = input.n_vertices();
+  AngleBounds bounds;
+  bounds.min_deg = options.min_angle_deg;
+  bounds.max_deg = options.max_angle_deg;
+  // A mesh that already meets the bounds comes back unchanged, unless a size was asked for; and
+  // a time-limited repair that ends worse than its input hands back the input.
+  std::optional<Mesh> as_is;
+  std::size_t as_is_bad = SIZE_MAX;
+  if (options.method == Method::Acute && (as_is = input_as_result(input, options, vertex_of_point))) {
+    as_is_bad = bad_triangles(*as_is, bounds).size();
+    if (as_is_bad == 0 && options.size <= 0 && options.target_vertices == 0) {
+      r.mesh = std::move(*as_is);
+      r.notes.push_back("the input meets the bounds already: returned unchanged");
+      finish(r, bounds, options, true, false);
+      return r;
+    }
+  }
   MeshOptions mo;
   mo.method = options.method == Method::Acute ? Method::Cvt : options.method;  // repair below, with cancel
   mo.cvt_as_repair_start = options.method == Method::Acute;
@@ -611,9 +663,6 @@ RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options
   r.mesh = std::move(m.mesh);
   r.iterations = m.iterations;
   r.notes = std::move(m.notes);
-  AngleBounds bounds;
-  bounds.min_deg = options.min_angle_deg;
-  bounds.max_deg = options.max_angle_deg;
   bool cancelled = false;
   if (options.method == Method::Acute) {
     cancelled = options.cancel && options.cancel();
@@ -623,6 +672,12 @@ RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options
     if (!cancelled) cancelled = run_repair(r, bounds, ro);
   }
   finish(r, bounds, options, options.method == Method::Acute || options.method == Method::Refine, cancelled);
+  if (as_is && as_is_bad < r.n_bad) {
+    r.notes.push_back("the repair stopped with " + std::to_string(r.n_bad) + " bad triangles, more than the input's " +
+                      std::to_string(as_is_bad) + ": the input is returned");
+    r.mesh = std::move(*as_is);
+    finish(r, bounds, options, true, cancelled);
+  }
   return r;
 }
 
