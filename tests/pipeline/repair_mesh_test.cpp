@@ -269,6 +269,21 @@ TEST(RepairMesh, a_repair_cut_short_never_returns_worse_than_its_input) {
   expect_repaired(in, repair_mesh(in), "hexagon_lattice(4, 0.6)");
 }
 
+TEST(RepairMesh, a_nearly_good_input_is_repaired_in_place) {
+  const Mesh in = hexagon_lattice(8, 0.6);  // 384 triangles, a few bad around the pushed vertex
+  const RepairMeshResult r = repair_mesh(in);
+  expect_repaired(in, r, "hexagon_lattice(8, 0.6)");
+  // The rest of the lattice is kept: nearly every input vertex is still there.
+  const auto before = vertex_set(in, false), after = vertex_set(r.mesh, false);
+  std::size_t kept = 0;
+  for (const auto& p : before) kept += after.count(p);
+  EXPECT_GE(kept + 8, before.size());
+  EXPECT_LE(r.n_vertices, in.n_vertices() + 8);
+  bool in_place = false;
+  for (const auto& note : r.notes) in_place = in_place || note.find("in place") != std::string::npos;
+  EXPECT_TRUE(in_place);
+}
+
 TEST(RepairMesh, interior_feature_edges_are_kept) {
   const Mesh in = ugly_mesh();
   // a polyline of interior edges through the middle row
