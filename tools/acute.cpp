@@ -1,8 +1,28 @@
 // acute: make 2D triangle meshes with every angle in [30, 90) degrees, and report on meshes.
 #include "commands/commands.h"
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+namespace {
+
+/// The meshers allocate and free large arrays phase after phase (triangulations, CVT sites, region
+/// copies); glibc's default hands freed memory back to the kernel at once, so every next phase
+/// page-faults it in again. A one-shot process keeps it: 1M triangles of A.poly in 4.5 s instead
+/// of 5.3 s, a third of that in the kernel before (README, measured figures).
+void keep_freed_memory() {
+#if defined(__GLIBC__)
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  mallopt(M_TOP_PAD, 256 << 20);
+#endif
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace acute::cli;
+  keep_freed_memory();
   CLI::App app{"acute: 2D triangle meshes with no obtuse and no small angles"};
   app.require_subcommand(1);
   app.footer(
