@@ -10,7 +10,7 @@ namespace {
 /// The meshers allocate and free large arrays phase after phase (triangulations, CVT sites, region
 /// copies); glibc's default hands freed memory back to the kernel at once, so every next phase
 /// page-faults it in again. A one-shot process keeps it: 1M triangles of A.poly in 4.5 s instead
-/// of 5.3 s, a third of that in the kernel before (README, measured figures).
+/// of 5.3 s, of which a fifth was page faults (README, measured figures).
 void keep_freed_memory() {
 #if defined(__GLIBC__)
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
