@@ -208,26 +208,24 @@ Mesh hexagon_lattice(int r, double push = 0) {
   return make_mesh(pts, tris);
 }
 
+/// The faces as vertex index triples, each rotated to start at its smallest index.
+std::set<std::array<int, 3>> face_triples(const Mesh& m) {
+  std::set<std::array<int, 3>> out;
+  for (auto fh : m.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (auto v : m.fv_range(fh)) t[static_cast<std::size_t>(k++)] = v.idx();
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    out.insert(t);
+  }
+  return out;
+}
+
 bool same_vertices_and_faces(const Mesh& a, const Mesh& b) {
   if (a.n_vertices() != b.n_vertices() || a.n_faces() != b.n_faces()) return false;
   for (auto vh : a.vertices())
     if (point2(a, vh) != point2(b, vh)) return false;
-  std::set<std::array<int, 3>> fa, fb;
-  for (auto fh : a.faces()) {
-    std::array<int, 3> t{};
-    int k = 0;
-    for (auto v : a.fv_range(fh)) t[static_cast<std::size_t>(k++)] = v.idx();
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    fa.insert(t);
-  }
-  for (auto fh : b.faces()) {
-    std::array<int, 3> t{};
-    int k = 0;
-    for (auto v : b.fv_range(fh)) t[static_cast<std::size_t>(k++)] = v.idx();
-    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
-    fb.insert(t);
-  }
-  return fa == fb;
+  return face_triples(a) == face_triples(b);
 }
 
 TEST(RepairMesh, an_input_within_the_bounds_comes_back_unchanged) {
