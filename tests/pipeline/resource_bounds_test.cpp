@@ -66,14 +66,14 @@ TEST(ResourceBounds, exhausted_time_limit_still_gives_a_valid_mesh) {
   options.time_limit_s = 1e-6;
   const MeshResult r = generate_mesh(d, options);
   EXPECT_TRUE(has_note(r, "time limit"));
-  EXPECT_TRUE(has_note(r, "in its size field")) << "the CVT start is given up: the CDT is the start";
+  EXPECT_TRUE(has_note(r, "in its size field")) << "the CVT start is given up: a refinement start within the limit";
   EXPECT_EQ(test::verify_conforms(r.mesh, d, mesh_area(build_domain_cdt(d))), "");
   EXPECT_EQ(test::verify_segment_chains(r.mesh, d), "");
 }
 
 // A domain whose size field alone outlasts the CVT's share of the time limit (a 3.7M-vertex mesh of
 // debug2 given to `acute repair --time-limit 30` computed its size field for over 300 s): the CVT
-// start gives up after the lfs samples (and the pipeline starts the repair from the CDT: see
+// start gives up after the lfs samples (and the pipeline starts the repair from a Delaunay refinement: see
 // exhausted_time_limit_still_gives_a_valid_mesh).
 TEST(ResourceBounds, cvt_start_past_its_share_after_the_size_field_is_abandoned) {
   const Domain d = toothed_square(200);

@@ -394,18 +394,23 @@ void grade(const EdgeGraph& graph, std::vector<double>& values, double slope) {
 /// each end at the distances where the graded size doubles, plus its midpoint, and the sizes are
 /// graded again; a round or two leave every edge's interpolant within a factor 2 of the graded
 /// bound. The points are added to the samples once, as large sizes that the gradation brings down.
-void add_grading_points(LfsSamples& samples, double gradation, double hmax) {
+/// False (samples unchanged) when give_up(s) says a second round of s seconds is out of time.
+bool add_grading_points(LfsSamples& samples, double gradation, double hmax, const std::function<bool(double)>& give_up) {
   const double slope = gradation - 1.0;
-  if (!(slope > 0)) return;
+  if (!(slope > 0)) return true;
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<Point2> points;
   std::vector<double> values;
   for (std::size_t i = 0; i < samples.points.size(); ++i)
     if (samples.lfs[i] < inf) points.push_back(samples.points[i]), values.push_back(std::min(samples.lfs[i], hmax));
   const std::size_t n_samples = points.size();
-  if (n_samples < 3) return;
+  if (n_samples < 3) return true;
   constexpr int kRounds = 2;
+  double last_round_s = 0;
   for (int round = 0; round < kRounds; ++round) {
+    // give_up(s): whether a step of s seconds would outlast the time the caller has.
+    if (round > 0 && give_up(last_round_s)) return false;
+    const auto round_start = std::chrono::steady_clock::now();
     const auto triangles = delaunay_triangles(points);
     for (std::size_t i = n_samples; i < points.size(); ++i) values[i] = hmax;
     grade(EdgeGraph(points, triangles), values, slope);
@@ -435,11 +440,13 @@ void add_grading_points(LfsSamples& samples, double gradation, double hmax) {
       values.push_back(hmax);
     }
     if (points.size() == before) break;
+    last_round_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - round_start).count();
   }
   for (std::size_t i = n_samples; i < points.size(); ++i) {
     samples.points.push_back(points[i]);
     samples.lfs.push_back(std::numeric_limits<double>::max());
   }
+  return true;
 }
 
 /// Graded fields from lfs samples: values clamp(lfs_factor * lfs, hmin, hmax) at the samples, hmax
@@ -553,8 +560,9 @@ LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap) {
 namespace {
 
 /// Whether params.abandon_after_s has passed since start.
-bool past_abandon_time(const SizeFieldParams& params, std::chrono::steady_clock::time_point start) {
-  return params.abandon_after_s > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > params.abandon_after_s;
+bool past_abandon_time(const SizeFieldParams& params, std::chrono::steady_clock::time_point start, double next_step_s = 0) {
+  return params.abandon_after_s > 0 &&
+         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() + next_step_s > params.abandon_after_s;
 }
 
 }  // namespace
@@ -567,7 +575,9 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
   const double hmin = params.hmin > 0 ? std::min(params.hmin, hmax) : std::min(kMinSizeRatio * dm.diameter, hmax);
   LfsSamples samples = local_feature_size_samples(cdt, hmax);
   if (past_abandon_time(params, start)) return SizeField::uniform(hmax);
-  add_grading_points(samples, params.gradation, hmax);
+  if (!add_grading_points(samples, params.gradation, hmax, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||
+      past_abandon_time(params, start))
+    return SizeField::uniform(hmax);
   return GradedFields(samples, dm, params.gradation).make(params.lfs_factor, hmin, hmax);
 }
 
@@ -590,8 +600,9 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params) 
     const double hmin = params.hmin > 0 ? std::min(params.hmin, hn) : std::min(kMinSizeRatio * dm.diameter, hn);
     LfsSamples samples = local_feature_size_samples(input_cdt, hn);
     if (past_abandon_time(params, start)) return SizeField::uniform(hn);
-    add_grading_points(samples, params.gradation, hn);
-    if (past_abandon_time(params, start)) return SizeField::uniform(hn);
+    if (!add_grading_points(samples, params.gradation, hn, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||
+        past_abandon_time(params, start))
+      return SizeField::uniform(hn);
     GradedFields fields(samples, dm, params.gradation);
     auto field_at = [&](double hmax) { return fields.make(params.lfs_factor, hmin, hmax); };
     const double top = std::max(hn, dm.diameter);

@@ -135,18 +135,23 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       try {
         CvtResult cvt = cvt_mesh(domain, cp);
         if (cvt.out_of_time && !cvt.abandoned) result.notes.push_back("the CVT start stopped at its share of the time limit");
-        if (cvt.abandoned) {
-          // A huge domain whose size field alone outlasts the share: the CDT is the start.
-          result.notes.push_back("the CVT start ran out of its share of the time limit in its size field: the domain's CDT is the start");
-        } else if (cvt.over_budget) {
-          // Keep the CDT, refined within the budget: the best valid mesh the limits allow.
-          result.notes.push_back("the CVT start needs " + std::to_string(cvt.mesh.n_vertices()) + " vertices, over the budget of " +
-                                 std::to_string(options.max_vertices) + "; using a Delaunay refinement start within it");
+        if (cvt.abandoned || cvt.over_budget) {
+          // A domain whose size field alone outlasts the time share, or whose CVT start needs more
+          // vertices than allowed: its CDT, refined within what is left of the share and the budget,
+          // is the best valid start the limits allow.
+          if (cvt.abandoned)
+            result.notes.push_back("the CVT start ran out of its share of the time limit in its size field; using a Delaunay refinement start");
+          else
+            result.notes.push_back("the CVT start needs " + std::to_string(cvt.mesh.n_vertices()) + " vertices, over the budget of " +
+                                   std::to_string(options.max_vertices) + "; using a Delaunay refinement start within it");
           RefineParams rp;
           rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
           rp.max_edge = target_edge(options, mesh_area(result.mesh));
           rp.max_vertices = options.max_vertices;
-          if (options.time_limit_s > 0) rp.time_limit_s = std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);
+          // When the CVT's half is gone: up to 70% of the limit (at least 15% of it), the rest for the repair.
+          if (options.time_limit_s > 0)
+            rp.time_limit_s = cvt.abandoned ? std::max(0.7 * options.time_limit_s - seconds_since(start), 0.15 * options.time_limit_s)
+                                            : std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);
           if (refine(result.mesh, rp).status == RefineStatus::OutOfTime) result.notes.push_back("the refinement start stopped at its share of the time limit");
         } else {
           result.mesh = std::move(cvt.mesh);

@@ -72,6 +72,10 @@ class Refiner {
     // Faces re-created by a rollback are not queued: sweep the whole mesh until a sweep finds
     // nothing to do (or nothing changed).
     for (;;) {
+      if (past_deadline()) {  // a sweep costs a pass over the whole mesh
+        result_.status = RefineStatus::OutOfTime;
+        break;
+      }
       const std::size_t before = progress();
       for (auto fh : mesh_.faces())
         if (is_bad(fh)) faces_.push_back(fh);
@@ -90,6 +94,9 @@ class Refiner {
 
  private:
   std::size_t progress() const { return result_.inserted + result_.segment_splits + shrinks_; }
+  bool past_deadline() const {
+    return deadline_ != std::chrono::steady_clock::time_point::max() && std::chrono::steady_clock::now() > deadline_;
+  }
 
   // ---------------------------------------------------------------- corners
 
@@ -356,7 +363,7 @@ class Refiner {
         result_.status = RefineStatus::BudgetExhausted;
         break;
       }
-      if (step % 256 == 0 && deadline_ != std::chrono::steady_clock::time_point::max() && std::chrono::steady_clock::now() > deadline_) {
+      if (step % 256 == 0 && past_deadline()) {
         result_.status = RefineStatus::OutOfTime;
         break;
       }
