@@ -132,6 +132,15 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       }
       if (options.observer)
         cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy, p.gradient_norm, p.phase}); };
+      // The fallback start: the CDT refined within the vertex budget and `seconds` (with a time limit).
+      auto refine_start = [&](double seconds) {
+        RefineParams rp;
+        rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
+        rp.max_edge = target_edge(options, mesh_area(result.mesh));
+        rp.max_vertices = options.max_vertices;
+        if (options.time_limit_s > 0) rp.time_limit_s = std::max(seconds, 1e-9);
+        if (refine(result.mesh, rp).status == RefineStatus::OutOfTime) result.notes.push_back("the refinement start stopped at its share of the time limit");
+      };
       try {
         CvtResult cvt = cvt_mesh(domain, cp);
         if (cvt.out_of_time && !cvt.abandoned) result.notes.push_back("the CVT start stopped at its share of the time limit");
@@ -144,15 +153,9 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
           else
             result.notes.push_back("the CVT start needs " + std::to_string(cvt.mesh.n_vertices()) + " vertices, over the budget of " +
                                    std::to_string(options.max_vertices) + "; using a Delaunay refinement start within it");
-          RefineParams rp;
-          rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
-          rp.max_edge = target_edge(options, mesh_area(result.mesh));
-          rp.max_vertices = options.max_vertices;
           // When the CVT's half is gone: up to 70% of the limit (at least 15% of it), the rest for the repair.
-          if (options.time_limit_s > 0)
-            rp.time_limit_s = cvt.abandoned ? std::max(0.7 * options.time_limit_s - seconds_since(start), 0.15 * options.time_limit_s)
-                                            : std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);
-          if (refine(result.mesh, rp).status == RefineStatus::OutOfTime) result.notes.push_back("the refinement start stopped at its share of the time limit");
+          refine_start(cvt.abandoned ? std::max(0.7 * options.time_limit_s - seconds_since(start), 0.15 * options.time_limit_s)
+                                     : 0.5 * options.time_limit_s - seconds_since(start));
         } else {
           result.mesh = std::move(cvt.mesh);
           result.iterations = cvt.iterations;
@@ -160,13 +163,8 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       } catch (const InvalidInput& e) {
         // The domain itself is fine (its CDT was built above): fall back to a refinement start.
         result.notes.push_back(std::string("CVT start failed (") + e.what() + "); using a Delaunay refinement start");
-        RefineParams rp;
-        rp.min_angle_deg = std::min(options.min_angle_deg, 30.0);
-        rp.max_edge = target_edge(options, mesh_area(result.mesh));
-        rp.max_vertices = options.max_vertices;
         // As the CVT start: at most half the time limit, the repair has the rest.
-        if (options.time_limit_s > 0) rp.time_limit_s = std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);
-        if (refine(result.mesh, rp).status == RefineStatus::OutOfTime) result.notes.push_back("the refinement start stopped at its share of the time limit");
+        refine_start(0.5 * options.time_limit_s - seconds_since(start));
       }
       if (options.method == Method::Cvt) break;
       result.start_vertices = result.mesh.n_vertices();

@@ -624,6 +624,10 @@ std::optional<Mesh> input_as_result(const Mesh& input, const RepairMeshOptions& 
 }  // namespace
 
 RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options) {
+  // The time limit covers the whole repair: a repair in place, the start mesh (the CVT takes at
+  // most half of what is left, see generate_mesh) and the repair of it.
+  const auto t0 = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   check_options(options);
   notify(options, "check");
   check_repairable(input);
@@ -645,7 +649,6 @@ RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options
   // a time-limited repair that ends worse than its input hands back the input.
   std::optional<Mesh> as_is;
   std::size_t as_is_bad = SIZE_MAX;
-  double time_used = 0;  // by a repair in place that did not converge
   if (options.method == Method::Acute && (as_is = input_as_result(input, options, vertex_of_point))) {
     as_is_bad = bad_triangles(*as_is, bounds).size();
     if (as_is_bad == 0 && options.size <= 0 && options.target_vertices == 0) {
@@ -658,7 +661,6 @@ RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options
     // the rest kept; only when that does not converge within a short budget is it remeshed.
     constexpr std::size_t kLocalRatio = 50;
     if (as_is_bad * kLocalRatio <= as_is->n_faces() && options.size <= 0 && options.target_vertices == 0) {
-      const auto t_local = std::chrono::steady_clock::now();
       r.mesh = *as_is;
       make_delaunay(r.mesh);
       RepairMeshOptions lo = options;
@@ -672,8 +674,6 @@ RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options
       }
       r.iterations = 0;
       r.notes.push_back("the repair in place left bad triangles: the region is remeshed");
-      if (options.time_limit_s > 0)
-        time_used += std::chrono::duration<double>(std::chrono::steady_clock::now() - t_local).count();
     }
   }
   MeshOptions mo;
@@ -689,10 +689,7 @@ RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options
   if (options.size <= 0 && options.target_vertices == 0) mo.max_size = input_size_cap(input);
   mo.seed = options.seed;
   mo.max_vertices = options.max_vertices;
-  // The time limit covers the whole repair: the start mesh (the CVT takes at most half of it, see
-  // generate_mesh) and the repair below gets what is left.
-  const auto t0 = std::chrono::steady_clock::now() - std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(time_used));
-  mo.time_limit_s = options.time_limit_s > 0 ? std::max(options.time_limit_s - time_used, 1e-9) : 0;
+  mo.time_limit_s = options.time_limit_s > 0 ? std::max(options.time_limit_s - elapsed(), 1e-9) : 0;
   if (options.progress)
     mo.observer = [&](const MeshProgress& p) { notify(options, p.phase.c_str(), p.iteration, p.bad); };
   MeshResult m = generate_mesh(r.domain, mo);
@@ -704,7 +701,7 @@ RepairMeshResult repair_mesh(const Mesh& input, const RepairMeshOptions& options
     cancelled = options.cancel && options.cancel();
     RepairMeshOptions ro = options;
     if (options.time_limit_s > 0)
-      ro.time_limit_s = std::max(1e-9, options.time_limit_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      ro.time_limit_s = std::max(1e-9, options.time_limit_s - elapsed());
     if (!cancelled) cancelled = run_repair(r, bounds, ro);
   }
   finish(r, bounds, options, options.method == Method::Acute || options.method == Method::Refine, cancelled);
