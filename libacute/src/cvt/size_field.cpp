@@ -412,8 +412,12 @@ bool add_grading_points(LfsSamples& samples, double gradation, double hmax, cons
     if (round > 0 && give_up(last_round_s)) return false;
     const auto round_start = std::chrono::steady_clock::now();
     const auto triangles = delaunay_triangles(points);
+    // A round is not cut short, but given up between its steps once the time is gone (the first
+    // round on a 10,000-vertex polygon takes seconds: debug2 under a 2 s limit spent 2 s here).
+    if (give_up(0)) return false;
     for (std::size_t i = n_samples; i < points.size(); ++i) values[i] = hmax;
     grade(EdgeGraph(points, triangles), values, slope);
+    if (give_up(0)) return false;
     const std::size_t before = points.size();
     // Each edge once, hull edges included (they have one triangle, in either orientation).
     std::vector<std::pair<std::size_t, std::size_t>> edges;
