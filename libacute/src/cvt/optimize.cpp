@@ -407,8 +407,9 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
     sp.time_limit_s = std::max(0.25 * params.time_limit_s - elapsed(), 1e-9);
     sp.abandon_after_s = std::max(params.time_limit_s - elapsed(), 1e-9);
   }
-  out.size_field = make_size_field(cdt, sp);
-  if (params.time_limit_s > 0 && elapsed() > params.time_limit_s) {
+  bool size_field_abandoned = false;
+  out.size_field = make_size_field(cdt, sp, &size_field_abandoned);
+  if (size_field_abandoned || (params.time_limit_s > 0 && elapsed() > params.time_limit_s)) {
     out.out_of_time = out.abandoned = true;
     return out;
   }

@@ -58,6 +58,7 @@ class Repairer {
     }
     std::size_t best_bad = SIZE_MAX;
     Mesh best;
+    bool current_is_best = true;
     int stagnation = 0;
     for (int it = 0;; ++it) {
       const auto clusters = find_clusters(mesh_, bounds_, forced_);
@@ -67,10 +68,14 @@ class Repairer {
       result_.iterations = it;
       const bool global = it < params_.global_iterations && bad * params_.global_ratio >= mesh_.n_faces();
       if (params_.observer) params_.observer(RepairProgress{it, bad, global});
-      if (bad < best_bad) {
+      // The mesh as it is now is the best so far when no earlier one had fewer bad triangles; it
+      // is copied aside only when another iteration follows (a copy of an 800k-vertex mesh
+      // costs 0.4 s, and a run stopped by its time limit needs none).
+      current_is_best = bad <= best_bad;
+      const bool improved = bad < best_bad;
+      if (improved) {
         best_bad = bad;
         stagnation = 0;
-        if (bad > 0) best = mesh_;
       } else {
         ++stagnation;
       }
@@ -95,11 +100,12 @@ class Repairer {
         result_.status = RepairStatus::VertexBudget;
         break;
       }
+      if (improved) best = mesh_;
       iterate(clusters, global, it);
       collect_garbage(mesh_);
       refresh_forced();
     }
-    if (result_.status != RepairStatus::Converged && best_bad < SIZE_MAX && best.n_faces() > 0) mesh_ = std::move(best);
+    if (!current_is_best && best.n_faces() > 0) mesh_ = std::move(best);
     collect_garbage(mesh_);
     result_.bad_after = bad_triangles(mesh_, bounds_).size();
     return result_;

@@ -119,7 +119,9 @@ LfsSamples local_feature_size_samples(const Mesh& input_cdt, double spacing_cap)
 /// The graded field of the input: h = lfs_factor * lfs at the local_feature_size_samples (spacing
 /// cap hmax), plus a coarse grid at hmax; clamped to [hmin, hmax] and gradation-limited along the
 /// edges of the Delaunay triangulation of those points (Dijkstra), which is the background mesh.
-SizeField local_feature_size_field(const Mesh& input_cdt, const SizeFieldParams& params);
+/// *abandoned (when given) is set true where params.abandon_after_s gave the field up (a uniform
+/// field at hmax comes back then).
+SizeField local_feature_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned = nullptr);
 
 /// Chooses the field from params: uniform(size); for target_vertices uniform, or (graded) the graded
 /// field with hmax >= the uniform size h_N for N vertices, hmax chosen so the predicted count is
@@ -127,6 +129,9 @@ SizeField local_feature_size_field(const Mesh& input_cdt, const SizeFieldParams&
 /// than N vertices, the count exceeds the target (hmax then the diameter), up to 16 N; beyond
 /// that the lfs-bound sizes are coarsened by a common factor to about 16 N (pathological inputs
 /// such as thousands of needle-thin spikes). Else the graded field.
-SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params);
+/// *abandoned (when given) says whether params.abandon_after_s gave the field up: then a uniform
+/// field comes back and the caller gives its start up too (also when the abandon time is only
+/// predicted to pass: a grading round that would outlast it is not started).
+SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned = nullptr);
 
 }  // namespace acute
