@@ -158,7 +158,7 @@ void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code
   cmd->add_option("--seed", args->options.seed, "Random seed (deterministic output)")->capture_default_str();
   cmd->add_option("--max-iterations", args->options.max_iterations, "Iteration cap (0: method default)");
   cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();
-  cmd->add_option("--time-limit", args->options.time_limit_s, "Time limit in seconds (0: none)");
+  cmd->add_option("--time-limit", args->options.time_limit_s, "Time limit in seconds for the meshing; a step that cannot be cut (about a second on 10^6 vertices) and writing the output come on top (0: none)");
   cmd->add_option("--dual", args->dual, "Also write the circumcentric dual (.off .obj .ply .vtk .vtu .svg)")->type_name("DUAL");
   cmd->add_option("--pictures", args->pictures,
                   "Also write PREFIX_before.svg (the CDT of the domain), PREFIX_after.svg and their angle histograms")

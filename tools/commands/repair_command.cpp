@@ -240,7 +240,7 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
   cmd->add_option("--seed", args->options.seed, "Random seed (deterministic output)")->capture_default_str();
   cmd->add_option("--max-iterations", args->options.max_iterations, "Repair iteration cap (0: default)");
   cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();
-  cmd->add_option("--time-limit", args->options.time_limit_s, "Repair time limit in seconds (0: none)");
+  cmd->add_option("--time-limit", args->options.time_limit_s, "Time limit in seconds for the repair (its start included); reading, checking and writing the mesh come on top (0: none)");
   cmd->add_option("--pictures", args->pictures,
                   "Also write PREFIX_before.svg (the input), PREFIX_after.svg and their angle histograms")
       ->type_name("PREFIX");
