@@ -32,6 +32,31 @@ TEST(RemoveVertex, inserted_points_removed_again_restore_delaunay) {
   EXPECT_NEAR(test::total_area(mesh), 16.0, 1e-12);
 }
 
+TEST(RemoveVertices, a_disk_of_points_goes_and_the_rest_stays_delaunay) {
+  // 300 free points in a 10 x 10 grid square; those within 3 of the centre removed as one set,
+  // with an input corner that must stay.
+  Mesh mesh = test::grid_mesh(10);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.05, 9.95);
+  for (int i = 0; i < 300; ++i) insert_point(mesh, Point2(u(rng), u(rng)), *mesh.faces().begin());
+  std::vector<VertexHandle> disk;
+  VertexHandle corner;
+  for (auto vh : mesh.vertices()) {
+    if (point2(mesh, vh) == Point2(0, 0)) corner = vh;
+    if ((point2(mesh, vh) - Point2(5, 5)).norm() < 3) disk.push_back(vh);
+  }
+  ASSERT_GT(disk.size(), 80u);
+  ASSERT_TRUE(corner.is_valid() && is_input(mesh, corner));
+  EXPECT_TRUE(remove_vertices(mesh, disk));
+  for (auto vh : disk) EXPECT_TRUE(mesh.status(vh).deleted()) << "vertex " << vh.idx();
+  EXPECT_FALSE(remove_vertices(mesh, {corner})) << "an input vertex stays";
+  EXPECT_FALSE(mesh.status(corner).deleted());
+  mesh.garbage_collection();
+  EXPECT_MESH_VALID(mesh);
+  EXPECT_MESH_DELAUNAY(mesh);
+  EXPECT_NEAR(test::total_area(mesh), 100.0, 1e-9);
+}
+
 TEST(RemoveVertex, boundary_vertex_on_segment_rejoins_the_segment) {
   Mesh mesh = test::grid_mesh(3);
   VertexHandle on_bottom;

@@ -146,6 +146,34 @@ bool remove_vertex(Mesh& mesh, VertexHandle vh) {
   return true;
 }
 
+bool remove_vertices(Mesh& mesh, const std::vector<VertexHandle>& vertices) {
+  std::vector<VertexHandle> left = vertices, later, ring;
+  std::vector<char> taken(mesh.n_vertices(), 0);  // a neighbour of a vertex removed this round
+  // A removal that fails may succeed once its neighbours are gone: rounds until none goes.
+  for (bool progress = true; progress && !left.empty();) {
+    progress = false;
+    std::fill(taken.begin(), taken.end(), 0);
+    later.clear();
+    for (VertexHandle vh : left) {
+      if (mesh.status(vh).deleted()) continue;
+      if (taken[static_cast<std::size_t>(vh.idx())]) {
+        later.push_back(vh);
+        continue;
+      }
+      ring.clear();
+      for (auto w : mesh.vv_range(vh)) ring.push_back(w);
+      if (remove_vertex(mesh, vh)) {
+        progress = true;
+        for (auto w : ring) taken[static_cast<std::size_t>(w.idx())] = 1;
+      } else {
+        later.push_back(vh);
+      }
+    }
+    std::swap(left, later);
+  }
+  return left.empty();
+}
+
 OpVerdict can_collapse(const Mesh& mesh, HalfedgeHandle v0v1) {
   const VertexHandle v0 = mesh.from_vertex_handle(v0v1), v1 = mesh.to_vertex_handle(v0v1);
   const auto& d0 = mesh.data(v0);

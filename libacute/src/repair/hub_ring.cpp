@@ -162,11 +162,7 @@ bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below) {
       if (!sub.status(vh).deleted() && sub.data(vh).kind == VertexKind::Free && (point2(sub, vh) - c).norm() < plan.reach &&
           in_sector(point2(sub, vh)))
         doomed.push_back(vh);
-    for (int pass = 0; pass < 2; ++pass)
-      for (auto vh : doomed)
-        if (!sub.status(vh).deleted()) remove_vertex(sub, vh);
-    for (auto vh : doomed)
-      if (!sub.status(vh).deleted()) return false;
+    if (!remove_vertices(sub, doomed)) return false;
     // Each point located from the faces of the one before, then from the apex's (the walk never
     // crosses a wall, so it must start on the sector's side).
     VertexHandle last = apex;

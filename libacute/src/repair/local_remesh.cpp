@@ -241,11 +241,7 @@ bool rebuild_sectors(Mesh& sub, VertexHandle apex, const std::vector<Sector>& se
     if (!sub.status(vh).deleted() && !is_input(sub, vh) && !is_kept(vh) && in_sector(point2(sub, vh)) && (point2(sub, vh) - c).norm() < reach)
       doomed.push_back(vh);
   if (doomed.empty()) return false;
-  for (int pass = 0; pass < 2; ++pass)
-    for (auto vh : doomed)
-      if (!sub.status(vh).deleted()) remove_vertex(sub, vh);
-  for (auto vh : doomed)
-    if (!sub.status(vh).deleted()) return false;  // something in the way: leave it to other candidates
+  if (!remove_vertices(sub, doomed)) return false;  // something in the way: leave it to other candidates
 
   // Wall points from the outermost inwards: each split shortens the wall edge at the apex.
   for (std::size_t w = 0; w < walls.size(); ++w) {

@@ -153,11 +153,7 @@ bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings) {
   for (auto vh : sub.vertices())
     if (!sub.status(vh).deleted() && !is_input(sub, vh) && (point2(sub, vh) - c).norm() < radius) doomed.push_back(vh);
   if (doomed.empty()) return false;
-  for (int pass = 0; pass < 2; ++pass)
-    for (auto vh : doomed)
-      if (!sub.status(vh).deleted()) remove_vertex(sub, vh);
-  for (auto vh : doomed)
-    if (!sub.status(vh).deleted()) return false;
+  if (!remove_vertices(sub, doomed)) return false;
 
   // Radii of the even rays (walls included), a[0] < a[1] < ..., and of the odd rays, b[k] between
   // a[k] and a[k + 1]: a log-polar lattice from a[1] outwards, the outermost a step short of the
