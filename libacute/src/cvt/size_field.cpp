@@ -569,32 +569,30 @@ bool past_abandon_time(const SizeFieldParams& params, std::chrono::steady_clock:
          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() + next_step_s > params.abandon_after_s;
 }
 
+/// The uniform field of a size field given up at its abandon time, flagged for the caller.
+SizeField given_up(double h, bool* abandoned) {
+  if (abandoned) *abandoned = true;
+  return SizeField::uniform(h);
+}
+
 }  // namespace
 
 SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& params, bool* abandoned) {
   const auto start = std::chrono::steady_clock::now();
-  auto given_up = [&](double h) {
-    if (abandoned) *abandoned = true;
-    return SizeField::uniform(h);
-  };
   const DomainMeasures dm = measure_domain(cdt);
   if (!(dm.diameter > 0)) throw InvalidInput("size field: the domain has no extent");
   const double hmax = params.hmax > 0 ? params.hmax : kDefaultMaxSizeRatio * dm.diameter;
   const double hmin = params.hmin > 0 ? std::min(params.hmin, hmax) : std::min(kMinSizeRatio * dm.diameter, hmax);
   LfsSamples samples = local_feature_size_samples(cdt, hmax);
-  if (past_abandon_time(params, start)) return given_up(hmax);
+  if (past_abandon_time(params, start)) return given_up(hmax, abandoned);
   if (!add_grading_points(samples, params.gradation, hmax, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||
       past_abandon_time(params, start))
-    return given_up(hmax);
+    return given_up(hmax, abandoned);
   return GradedFields(samples, dm, params.gradation).make(params.lfs_factor, hmin, hmax);
 }
 
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned) {
   if (abandoned) *abandoned = false;
-  auto given_up = [&](double h) {
-    if (abandoned) *abandoned = true;
-    return SizeField::uniform(h);
-  };
   // With a vertex count, the lfs-bound field may exceed it by this factor at most.
   constexpr double kMaxExcess = 16.0;
   if (params.size < 0 || !std::isfinite(params.size)) throw InvalidInput("size field: --size must be positive");
@@ -612,16 +610,16 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
     const double target = static_cast<double>(params.max_vertices > 0 ? std::min(params.target_vertices, params.max_vertices) : params.target_vertices);
     const double hmin = params.hmin > 0 ? std::min(params.hmin, hn) : std::min(kMinSizeRatio * dm.diameter, hn);
     LfsSamples samples = local_feature_size_samples(input_cdt, hn);
-    if (past_abandon_time(params, start)) return given_up(hn);
+    if (past_abandon_time(params, start)) return given_up(hn, abandoned);
     if (!add_grading_points(samples, params.gradation, hn, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||
         past_abandon_time(params, start))
-      return given_up(hn);
+      return given_up(hn, abandoned);
     GradedFields fields(samples, dm, params.gradation);
     auto field_at = [&](double hmax) { return fields.make(params.lfs_factor, hmin, hmax); };
     const double top = std::max(hn, dm.diameter);
-    if (past_abandon_time(params, start)) return given_up(hn);
+    if (past_abandon_time(params, start)) return given_up(hn, abandoned);
     SizeField ft = field_at(top);
-    if (past_abandon_time(params, start)) return given_up(hn);
+    if (past_abandon_time(params, start)) return given_up(hn, abandoned);
     const double at_top = predicted_vertex_count(input_cdt, ft);
     if (at_top >= target) {
       // The features alone need more than N: keep h <= lfs (the count exceeds the target) unless
@@ -637,7 +635,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
       // Not cut by the time share (the first fields are the finest), only given up with the start
       // once the abandon time has passed (debug2 at 2k vertices spent 26 s here under a 15 s share).
       for (int k = 0; k < 5 && std::abs(count / cap - 1.0) >= 0.1; ++k) {
-        if (past_abandon_time(params, start)) return given_up(hn);
+        if (past_abandon_time(params, start)) return given_up(hn, abandoned);
         const double last_lambda = lambda, last_count = count;
         lambda *= std::pow(count / cap, 1.0 / exponent);
         ft = fields.make(lambda, hmin, top);

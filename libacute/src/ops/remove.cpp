@@ -147,12 +147,13 @@ bool remove_vertex(Mesh& mesh, VertexHandle vh) {
 }
 
 bool remove_vertices(Mesh& mesh, const std::vector<VertexHandle>& vertices) {
-  std::vector<VertexHandle> left = vertices, later, ring;
+  std::vector<VertexHandle> left = vertices, later, ring, marked;
   std::vector<char> taken(mesh.n_vertices(), 0);  // a neighbour of a vertex removed this round
   // A removal that fails may succeed once its neighbours are gone: rounds until none goes.
   for (bool progress = true; progress && !left.empty();) {
     progress = false;
-    std::fill(taken.begin(), taken.end(), 0);
+    for (auto w : marked) taken[static_cast<std::size_t>(w.idx())] = 0;  // not the whole mesh per round
+    marked.clear();
     later.clear();
     for (VertexHandle vh : left) {
       if (mesh.status(vh).deleted()) continue;
@@ -165,6 +166,7 @@ bool remove_vertices(Mesh& mesh, const std::vector<VertexHandle>& vertices) {
       if (remove_vertex(mesh, vh)) {
         progress = true;
         for (auto w : ring) taken[static_cast<std::size_t>(w.idx())] = 1;
+        marked.insert(marked.end(), ring.begin(), ring.end());
       } else {
         later.push_back(vh);
       }
