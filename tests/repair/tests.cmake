@@ -1,6 +1,7 @@
 acute_add_test(repair_tests
   SOURCES
     repair/angle_bounds_test.cpp
+    repair/exact_triangulation_test.cpp
     repair/hub_ring_test.cpp
     repair/joint_relaxation_test.cpp
     repair/local_remesh_test.cpp

@@ -380,6 +380,8 @@ void Triangulation::nest() { nest_ = {tlog_.size(), vlog_.size(), alog_.size(), 
 
 void Triangulation::unnest() { rollback_to(nest_); }
 
+Triangulation::Mark Triangulation::mark() const { return {tlog_.size(), vlog_.size(), alog_.size(), tris_.size(), pts_.size(), n_steiner_}; }
+
 void Triangulation::rollback_to(const Mark& m) {
   while (tlog_.size() > m.tlog) {
     tris_[static_cast<std::size_t>(tlog_.back().first)] = tlog_.back().second;
@@ -413,16 +415,19 @@ void Triangulation::rollback() {
   open_ = false;
 }
 
-std::vector<int> Triangulation::touched() const {
+std::vector<int> Triangulation::touched() const { return touched_since(begin_); }
+
+std::vector<int> Triangulation::touched_since(const Mark& m) const {
   if (stamp_.size() < tris_.size()) stamp_.resize(tris_.size(), 0);
   ++epoch_;
   std::vector<int> out;
-  for (const auto& [t, old] : tlog_) {
+  for (std::size_t i = m.tlog; i < tlog_.size(); ++i) {
+    const int t = tlog_[i].first;
     if (static_cast<std::size_t>(t) >= tris_.size() || stamp_[static_cast<std::size_t>(t)] == epoch_) continue;
     stamp_[static_cast<std::size_t>(t)] = epoch_;
     out.push_back(t);
   }
-  for (std::size_t t = begin_.ntris; t < tris_.size(); ++t)
+  for (std::size_t t = m.ntris; t < tris_.size(); ++t)
     if (stamp_[t] != epoch_) {
       stamp_[t] = epoch_;
       out.push_back(static_cast<int>(t));

@@ -83,21 +83,26 @@ class Triangulation {
   bool remove_vertex(int v);                       ///< Steiner points only
 
   // Journal.
+  /// A point inside the open transaction to come back to (any number of them, innermost first).
+  struct Mark {
+    std::size_t tlog, vlog, alog, ntris, npts, nsteiner;
+  };
   void begin();
   void nest();      ///< a mark inside the transaction
   void unnest();    ///< back to the mark
+  Mark mark() const;
+  void rollback_to(const Mark& m);
   void commit();
   void rollback();  ///< back to begin()
   /// Triangle slots changed or created since begin() (live or dead).
   std::vector<int> touched() const;
   /// Values at begin() of the slots that existed then and were changed.
   std::vector<Tri> touched_originals() const;
+  /// Triangle slots changed or created since mark m (live or dead).
+  std::vector<int> touched_since(const Mark& m) const;
   const std::vector<int>& last_touched() const { return last_touched_; }
 
  private:
-  struct Mark {
-    std::size_t tlog, vlog, alog, ntris, npts, nsteiner;
-  };
   void build(const Mesh& mesh, const std::vector<int>& vertex_slot, std::vector<XPoint> pts, int n_required);
   void set_tri(int t, const Tri& value);
   void set_vtri(int v, int t);
@@ -111,7 +116,6 @@ class Triangulation {
   /// Triangles around v counter-clockwise; open is true when v is on the domain boundary (then
   /// the first and last triangle have the boundary edges).
   bool fan(int v, std::vector<int>& out, bool& open) const;
-  void rollback_to(const Mark& m);
 
   std::vector<XPoint> pts_;
   std::vector<char> alive_;
