@@ -94,6 +94,7 @@ class NonObtuseSolver {
     }
     if (tri.seg[k] < 0) ray_candidates(t, k, out);
     centre_candidates(t, out);
+    square_candidates(t, k, out);
     // Removing a Steiner corner (two Steiner points close on a segment make a needle that no
     // insertion mends).
     for (int m = 0; m < 3; ++m)
@@ -228,15 +229,67 @@ class NonObtuseSolver {
     }
   }
 
+  /// How many edges at v are segment edges; the first two in `ends` (a Steiner point on a
+  /// segment has 2, a free one 0).
+  int constrained_spokes(int v, int ends[2]) const {
+    int n = 0;
+    for (const auto& [w, seg] : tr_.spokes(v))
+      if (seg >= 0 && n++ < 2) ends[n - 1] = w;
+    return n;
+  }
+
+  /// Corners of t moved so that its obtuse corner c becomes a right one: a Steiner point at a far
+  /// corner onto the line through c perpendicular to the other edge at c (exact: its foot on the
+  /// line, or where the line meets its segment), and a free Steiner point at c pushed out of
+  /// the circle over the long edge (rounded, a hair outside: c need not be exact).
+  void square_candidates(int t, int k, std::vector<Candidate>& out) const {
+    const auto& tri = tr_.tri(t);
+    const int cv = tri.v[k];
+    const XPoint& c = tr_.point(cv);
+    int ends[2];
+    for (int j = 1; j <= 2; ++j) {
+      const int mv = tri.v[(k + j) % 3];
+      if (tr_.is_required(mv)) continue;
+      const XPoint &m = tr_.point(mv), &o = tr_.point(tri.v[(k + 3 - j) % 3]);
+      const Q nx = c.y - o.y, ny = o.x - c.x;  // perpendicular to o - c
+      const int n = constrained_spokes(mv, ends);
+      XPoint p;
+      if (n == 0) {
+        const Q s = ((m.x - c.x) * nx + (m.y - c.y) * ny) / (nx * nx + ny * ny);
+        p = XPoint(c.x + s * nx, c.y + s * ny);
+      } else if (n == 2) {
+        const XPoint &e0 = tr_.point(ends[0]), &e1 = tr_.point(ends[1]);
+        const Q ex = e1.x - e0.x, ey = e1.y - e0.y, den = nx * ey - ny * ex;
+        if (den == 0) continue;
+        const Q r = -(nx * (e0.y - c.y) - ny * (e0.x - c.x)) / den;
+        if (r <= 0 || r >= 1) continue;
+        p = XPoint(e0.x + r * ex, e0.y + r * ey);
+      } else {
+        continue;
+      }
+      if (bits(p.x) + bits(p.y) > 2 * kMaxBits) {
+        if (n != 0) continue;  // on a segment it must be exact
+        p = rounded(p);
+      }
+      out.push_back({Candidate::Relocate, mv, cv, p});
+    }
+    if (tr_.is_required(cv) || constrained_spokes(cv, ends) != 0) return;
+    const XPoint &a = tr_.point(tri.v[(k + 1) % 3]), &b = tr_.point(tri.v[(k + 2) % 3]);
+    const double mx = 0.5 * (a.dx + b.dx), my = 0.5 * (a.dy + b.dy);
+    const double r = 0.5 * std::hypot(b.dx - a.dx, b.dy - a.dy), dx = c.dx - mx, dy = c.dy - my;
+    const double len = std::hypot(dx, dy);
+    if (!(len > 0) || !std::isfinite(r)) return;
+    const double scale = r * (1 + 1e-7) / len;
+    out.push_back({Candidate::Relocate, cv, tri.v[(k + 1) % 3], XPoint(Q(mx + scale * dx), Q(my + scale * dy))});
+  }
+
   /// A Steiner point on a segment slid along it to the feet of its neighbours: a right angle at
   /// the new position against each (the corner of an obtuse triangle on a segment is otherwise
   /// only removed, and a thin pocket between two segments keeps it).
   void slide_candidates(int v, std::vector<Candidate>& out) const {
-    int ends[2] = {-1, -1}, n = 0;
+    int ends[2];
+    if (constrained_spokes(v, ends) != 2) return;
     const auto spokes = tr_.spokes(v);
-    for (const auto& [w, seg] : spokes)
-      if (seg >= 0 && n++ < 2) ends[n - 1] = w;
-    if (n != 2) return;
     const XPoint &a = tr_.point(ends[0]), &b = tr_.point(ends[1]), &pv = tr_.point(v);
     const Q sx = b.x - a.x, sy = b.y - a.y, len2 = sx * sx + sy * sy;
     for (const auto& [w, seg] : spokes) {
