@@ -109,6 +109,22 @@ TEST(NonObtuse, small_cgshop_instances_become_non_obtuse) {
   EXPECT_GE(n, 1);
 }
 
+// Exterior instances on which the greedy search stalled with one obtuse triangle left (fce5338:
+// nothing within 30 s): the chain search and the square moves finish them without a time limit,
+// with fewer than twice the best known Steiner points.
+TEST(NonObtuse, exterior_instances_the_greedy_search_stalled_on_are_finished) {
+  const std::pair<const char*, std::size_t> cases[] = {{"simple-polygon-exterior_20_92dcd467", 20},
+                                                       {"simple-polygon-exterior_40_785575e7", 30}};
+  for (const auto& [uid, best_known] : cases) {
+    const Domain d = io::read_cgshop(std::string(ACUTE_MESHES_DIR) + "/cgshop/" + uid + ".instance.json");
+    const NonObtuseResult r = non_obtuse_triangulation(d);
+    expect_conforming(d, r, uid);
+    EXPECT_TRUE(r.ok) << uid << ": " << r.n_obtuse << " obtuse";
+    EXPECT_EQ(exact_obtuse(r), 0u) << uid;
+    EXPECT_LT(r.n_steiner, 2 * best_known) << uid;
+  }
+}
+
 /// A start holding every input point: Delaunay refinement, then the acute repair with max 90
 /// (right angles allowed), as the required-points fallback makes it.
 Mesh repaired_start(const Domain& d) {
