@@ -30,6 +30,7 @@ namespace {
 
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
 constexpr double kRightSlack = 1e-6;  ///< --allow-right: max bound 90 + this
+constexpr double kUntimedNonObtuseGiveUp = 30;  ///< seconds: an untimed exact search hands over to the fallbacks
 
 /// A boundary loop of the mesh as vertex indices, with the region on its left; simple (a pinch
 /// vertex, where the region touches itself, lies on several loops).
@@ -496,6 +497,9 @@ RepairMeshResult repair_required_points(const Domain& domain, const RepairMeshOp
     };
     NonObtuseParams np;
     np.time_limit_s = timed ? 0.4 * o.time_limit_s : 0;
+    // Untimed, a search that has not found a non-obtuse triangulation in 30 s hands over to the
+    // fallbacks (it finishes most instances in seconds; a stalled one would otherwise run for hours).
+    np.give_up_s = timed ? 0 : kUntimedNonObtuseGiveUp;
     np.seed = o.seed;
     np.cancel = o.cancel;
     notify(o, "non-obtuse");

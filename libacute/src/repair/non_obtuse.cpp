@@ -765,17 +765,23 @@ NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtusePa
   // cascade of altitude feet either closes quickly or runs away, which ends the attempt), each
   // success pruned; the best kept. Time: attempts until half the budget, pruning the rest.
   const bool timed = deadline != Clock::time_point::max();
+  // Untimed, a stalled search gives up here (a success is then pruned without a limit).
+  const auto give_up = !timed && params.give_up_s > 0
+                           ? t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(params.give_up_s))
+                           : Clock::time_point::max();
   int successes = 0;
   for (unsigned attempt = 0; attempt < 400; ++attempt) {
     const auto now = Clock::now();
     if (attempt > 0 && (now > deadline || (params.cancel && params.cancel()))) break;
     if (successes >= 4 || (successes >= 1 && (!timed || now - t0 > (deadline - t0) / 2))) break;
     if (!best_ok && timed && now - t0 > (deadline - t0) * 6 / 10) break;  // the rest for unstick()
+    if (!best_ok && give_up != Clock::time_point::max() && now > t0 + (give_up - t0) * 6 / 10) break;
     Triangulation tr = Triangulation::from_mesh(cdt);
     NonObtuseParams p = params;
     p.seed = params.seed + attempt;
     // The first attempt gets most of the time (its plateau search does finish, slowly).
-    const auto share = timed ? now + (attempt == 0 ? (deadline - now) / 2 : (deadline - now) / 3) : deadline;
+    const auto share = timed ? now + (attempt == 0 ? (deadline - now) / 2 : (deadline - now) / 3)
+                             : best_ok ? deadline : std::min(give_up, now + (give_up - now) / 2);
     NonObtuseSolver solver(tr, p, share);
     ++result.rounds;
     if (solver.refine(cap, attempt > 0)) {
@@ -794,7 +800,7 @@ NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtusePa
   }
   if (!best_ok && !(params.cancel && params.cancel())) {
     // Every attempt stalled: work on the one with fewest obtuse triangles left, then prune it.
-    const auto lns_end = timed ? t0 + (deadline - t0) * 9 / 10 : deadline;
+    const auto lns_end = timed ? t0 + (deadline - t0) * 9 / 10 : give_up;
     best_ok = unstick(best, params, cap, lns_end, timed ? 100000 : 200);
     if (best_ok) {
       result.n_refined = best.n_steiner();

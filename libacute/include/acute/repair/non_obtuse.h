@@ -20,6 +20,9 @@ struct NonObtuseParams {
   std::size_t max_steiner = 0;   ///< cap on Steiner points during refinement; 0: 60 per input point + 2000
   double time_limit_s = 0;       ///< whole run (refinement, then pruning); 0: none
   double refine_time_s = 0;      ///< non_obtuse_from_start: the fixing part of time_limit_s (0: half); pruning the rest
+  /// non_obtuse_triangulation without a time limit: its search gives up after this many seconds
+  /// without a non-obtuse triangulation (0: never; a stalled search may then run for hours)
+  double give_up_s = 0;
   unsigned seed = 1;             ///< order of the local search
   std::function<bool()> cancel;  ///< polled; true stops (the best triangulation so far is returned)
 };
