@@ -32,6 +32,13 @@ constexpr std::size_t kMaxBits = 400;
 
 XPoint rounded(const XPoint& p) { return XPoint(Q(p.dx), Q(p.dy)); }
 
+/// The foot of p on the line through a with direction (dx, dy): a + r (dx, dy), with r in `r`
+/// (0 < r < 1: strictly inside the segment from a to a + (dx, dy)). Exact.
+XPoint foot_on_line(const XPoint& p, const XPoint& a, const Q& dx, const Q& dy, Q& r) {
+  r = ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy);
+  return XPoint(a.x + r * dx, a.y + r * dy);
+}
+
 struct Candidate {
   enum Kind { EdgeSplit, Free, Remove, Relocate } kind;
   /// EdgeSplit: the edge; Free: where the walk starts; Remove: tri is the vertex; Relocate: the
@@ -59,9 +66,9 @@ class NonObtuseSolver {
     const XPoint& a = tr_.point(tri.v[(k + 1) % 3]);
     const XPoint& b = tr_.point(tri.v[(k + 2) % 3]);
     // Foot of the altitude from the obtuse corner: two right triangles on this side.
-    const Q abx = b.x - a.x, aby = b.y - a.y;
-    const Q s = ((c.x - a.x) * abx + (c.y - a.y) * aby) / (abx * abx + aby * aby);
-    XPoint foot(a.x + s * abx, a.y + s * aby);
+    Q s;
+    const XPoint exact_foot = foot_on_line(c, a, b.x - a.x, b.y - a.y, s);
+    XPoint foot = exact_foot;
     if (tri.seg[k] >= 0) {
       out.push_back({Candidate::EdgeSplit, t, k, foot});
     } else {
@@ -79,7 +86,7 @@ class NonObtuseSolver {
         int m = 0;
         while (nt.v[m] == tri.v[(k + 1) % 3] || nt.v[m] == tri.v[(k + 2) % 3]) ++m;
         const XPoint& d = tr_.point(nt.v[m]);
-        const double fx = Q(a.x + s * abx).get_d(), fy = Q(a.y + s * aby).get_d();
+        const double fx = exact_foot.x.get_d(), fy = exact_foot.y.get_d();
         for (double lambda : {0.2, 0.45})
           out.push_back({Candidate::Free, t, -1, XPoint(Q(fx + lambda * (d.dx - fx)), Q(fy + lambda * (d.dy - fy)))});
       }
@@ -156,12 +163,9 @@ class NonObtuseSolver {
         const Q s = cx / (cx - cy);
         XPoint hit(px.x + s * (py.x - px.x), px.y + s * (py.y - px.y));
         if (bits(hit.x) + bits(hit.y) <= 2 * kMaxBits) out.push_back({Candidate::EdgeSplit, cur, exit, hit});
-        const Q sx = py.x - px.x, sy = py.y - px.y;
-        const Q r = ((c.x - px.x) * sx + (c.y - px.y) * sy) / (sx * sx + sy * sy);
-        if (r > 0 && r < 1) {
-          XPoint foot(px.x + r * sx, px.y + r * sy);
-          if (bits(foot.x) + bits(foot.y) <= 2 * kMaxBits) out.push_back({Candidate::EdgeSplit, cur, exit, foot});
-        }
+        Q r;
+        const XPoint foot = foot_on_line(c, px, py.x - px.x, py.y - px.y, r);
+        if (r > 0 && r < 1 && bits(foot.x) + bits(foot.y) <= 2 * kMaxBits) out.push_back({Candidate::EdgeSplit, cur, exit, foot});
         return;
       }
       const int next = u.n[exit];
@@ -255,8 +259,8 @@ class NonObtuseSolver {
       const int n = constrained_spokes(mv, ends);
       XPoint p;
       if (n == 0) {
-        const Q s = ((m.x - c.x) * nx + (m.y - c.y) * ny) / (nx * nx + ny * ny);
-        p = XPoint(c.x + s * nx, c.y + s * ny);
+        Q s;
+        p = foot_on_line(m, c, nx, ny, s);
       } else if (n == 2) {
         const XPoint &e0 = tr_.point(ends[0]), &e1 = tr_.point(ends[1]);
         const Q ex = e1.x - e0.x, ey = e1.y - e0.y, den = nx * ey - ny * ex;
@@ -287,17 +291,18 @@ class NonObtuseSolver {
   /// the new position against each (the corner of an obtuse triangle on a segment is otherwise
   /// only removed, and a thin pocket between two segments keeps it).
   void slide_candidates(int v, std::vector<Candidate>& out) const {
-    int ends[2];
-    if (constrained_spokes(v, ends) != 2) return;
     const auto spokes = tr_.spokes(v);
+    int ends[2], n = 0;
+    for (const auto& [w, seg] : spokes)
+      if (seg >= 0 && n++ < 2) ends[n - 1] = w;
+    if (n != 2) return;
     const XPoint &a = tr_.point(ends[0]), &b = tr_.point(ends[1]), &pv = tr_.point(v);
-    const Q sx = b.x - a.x, sy = b.y - a.y, len2 = sx * sx + sy * sy;
+    const Q sx = b.x - a.x, sy = b.y - a.y;
     for (const auto& [w, seg] : spokes) {
       if (seg >= 0) continue;
-      const XPoint& pw = tr_.point(w);
-      const Q r = ((pw.x - a.x) * sx + (pw.y - a.y) * sy) / len2;
+      Q r;
+      const XPoint foot = foot_on_line(tr_.point(w), a, sx, sy, r);
       if (r <= 0 || r >= 1) continue;
-      XPoint foot(a.x + r * sx, a.y + r * sy);
       if ((foot.x == pv.x && foot.y == pv.y) || bits(foot.x) + bits(foot.y) > 2 * kMaxBits) continue;
       out.push_back({Candidate::Relocate, v, ends[0], foot});
     }
