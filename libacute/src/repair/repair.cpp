@@ -68,6 +68,7 @@ class Repairer {
       result_.iterations = it;
       const bool global = it < params_.global_iterations && bad * params_.global_ratio >= mesh_.n_faces();
       if (params_.observer) params_.observer(RepairProgress{it, bad, global});
+      if (trace_) std::fprintf(stderr, "iteration %d: %zu bad in %zu clusters, %zu vertices%s\n", it, bad, clusters.size(), mesh_.n_vertices(), global ? " (global)" : "");
       // The mesh as it is now is the best so far when no earlier one had fewer bad triangles; it
       // is copied aside only when another iteration follows (a copy of an 800k-vertex mesh
       // costs 0.4 s, and a run stopped by its time limit needs none).
@@ -258,6 +259,9 @@ class Repairer {
       Mesh best;
       Score best_score = base;
       search(region, stuck_ > 1, best, best_score);
+      if (trace_)
+        std::fprintf(stderr, "  best: candidate %d, infeasible %zu bad %zu worst %.4f%s\n", best_candidate_, best_score.infeasible, best_score.bad, best_score.worst,
+                     best_score < base ? " (written back)" : " (kept the region as it was)");
       if (best_score < base) {
         if (paranoid_) {
           auto area = [](const Mesh& m) { double a = 0; for (auto fh : m.faces()) { const auto p = face_points(m, fh); a += signed_area2(p[0], p[1], p[2]); } return a; };
@@ -395,6 +399,7 @@ class Repairer {
   /// Best of the candidate operations; when `deep`, also every candidate applied to the four best
   /// results of the first level (two-step edits for clusters no single operation improves).
   void search(const detail::Region& region, bool deep, Mesh& best, Score& best_score) {
+    best_candidate_ = 0;  // (0: no candidate beat the region as it was)
     std::vector<Outcome> level1;
     expand(region.sub, region.forced, level1, /*remesh=*/stuck_ >= 2);
     // Where one-vertex moves are stuck, the best few outcomes also get a joint relaxation.
