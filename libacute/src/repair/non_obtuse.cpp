@@ -394,9 +394,8 @@ class NonObtuseSolver {
           for (std::size_t j = 0; j < second.size(); ++j) {
             tr_.nest();
             if (apply(second[j])) {
-              Score d = obtuse_delta();
-              d.first += 0;  // two points for this delta: only better when strictly fewer obtuse
-              if (d.first < pair_score.first - 0 && d < pair_score) {
+              const Score d = obtuse_delta();
+              if (d.first < pair_score.first && d < pair_score) {  // only strictly fewer obtuse
                 pair_score = d;
                 pair_first = static_cast<int>(i);
                 pair_tri = bad[bi];
