@@ -39,6 +39,20 @@ XPoint foot_on_line(const XPoint& p, const XPoint& a, const Q& dx, const Q& dy, 
   return XPoint(a.x + r * dx, a.y + r * dy);
 }
 
+XPoint foot_on_line(const XPoint& p, const XPoint& a, const Q& dx, const Q& dy) {
+  Q r;
+  return foot_on_line(p, a, dx, dy, r);
+}
+
+/// How many of `spokes` (a vertex's neighbours with their segment ids) are segment edges; the
+/// first two in `ends` (a Steiner point on a segment has 2, a free one 0).
+int constrained_ends(const std::vector<std::pair<int, int>>& spokes, int ends[2]) {
+  int n = 0;
+  for (const auto& [w, seg] : spokes)
+    if (seg >= 0 && n++ < 2) ends[n - 1] = w;
+  return n;
+}
+
 struct Candidate {
   enum Kind { EdgeSplit, Free, Remove, Relocate } kind;
   /// EdgeSplit: the edge; Free: where the walk starts; Remove: tri is the vertex; Relocate: the
@@ -66,8 +80,7 @@ class NonObtuseSolver {
     const XPoint& a = tr_.point(tri.v[(k + 1) % 3]);
     const XPoint& b = tr_.point(tri.v[(k + 2) % 3]);
     // Foot of the altitude from the obtuse corner: two right triangles on this side.
-    Q s;
-    const XPoint exact_foot = foot_on_line(c, a, b.x - a.x, b.y - a.y, s);
+    const XPoint exact_foot = foot_on_line(c, a, b.x - a.x, b.y - a.y);
     XPoint foot = exact_foot;
     if (tri.seg[k] >= 0) {
       out.push_back({Candidate::EdgeSplit, t, k, foot});
@@ -233,14 +246,8 @@ class NonObtuseSolver {
     }
   }
 
-  /// How many edges at v are segment edges; the first two in `ends` (a Steiner point on a
-  /// segment has 2, a free one 0).
-  int constrained_spokes(int v, int ends[2]) const {
-    int n = 0;
-    for (const auto& [w, seg] : tr_.spokes(v))
-      if (seg >= 0 && n++ < 2) ends[n - 1] = w;
-    return n;
-  }
+  /// How many edges at v are segment edges; the first two in `ends` (see constrained_ends).
+  int constrained_spokes(int v, int ends[2]) const { return constrained_ends(tr_.spokes(v), ends); }
 
   /// Corners of t moved so that its obtuse corner c becomes a right one: a Steiner point at a far
   /// corner onto the line through c perpendicular to the other edge at c (exact: its foot on the
@@ -259,8 +266,7 @@ class NonObtuseSolver {
       const int n = constrained_spokes(mv, ends);
       XPoint p;
       if (n == 0) {
-        Q s;
-        p = foot_on_line(m, c, nx, ny, s);
+        p = foot_on_line(m, c, nx, ny);
       } else if (n == 2) {
         const XPoint &e0 = tr_.point(ends[0]), &e1 = tr_.point(ends[1]);
         const Q ex = e1.x - e0.x, ey = e1.y - e0.y, den = nx * ey - ny * ex;
@@ -292,10 +298,8 @@ class NonObtuseSolver {
   /// only removed, and a thin pocket between two segments keeps it).
   void slide_candidates(int v, std::vector<Candidate>& out) const {
     const auto spokes = tr_.spokes(v);
-    int ends[2], n = 0;
-    for (const auto& [w, seg] : spokes)
-      if (seg >= 0 && n++ < 2) ends[n - 1] = w;
-    if (n != 2) return;
+    int ends[2];
+    if (constrained_ends(spokes, ends) != 2) return;
     const XPoint &a = tr_.point(ends[0]), &b = tr_.point(ends[1]), &pv = tr_.point(v);
     const Q sx = b.x - a.x, sy = b.y - a.y;
     for (const auto& [w, seg] : spokes) {
