@@ -777,13 +777,14 @@ NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtusePa
   const auto give_up = !timed && params.give_up_s > 0
                            ? t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(params.give_up_s))
                            : Clock::time_point::max();
+  // When a search without a result ends: the time limit, else the give-up time (or never).
+  const auto search_end = timed ? deadline : give_up;
   int successes = 0;
   for (unsigned attempt = 0; attempt < 400; ++attempt) {
     const auto now = Clock::now();
     if (attempt > 0 && (now > deadline || (params.cancel && params.cancel()))) break;
     if (successes >= 4 || (successes >= 1 && (!timed || now - t0 > (deadline - t0) / 2))) break;
-    if (!best_ok && timed && now - t0 > (deadline - t0) * 6 / 10) break;  // the rest for unstick()
-    if (!best_ok && give_up != Clock::time_point::max() && now > t0 + (give_up - t0) * 6 / 10) break;
+    if (!best_ok && search_end != Clock::time_point::max() && now - t0 > (search_end - t0) * 6 / 10) break;  // the rest for unstick()
     Triangulation tr = Triangulation::from_mesh(cdt);
     NonObtuseParams p = params;
     p.seed = params.seed + attempt;
@@ -808,7 +809,7 @@ NonObtuseResult non_obtuse_triangulation(const Domain& domain, const NonObtusePa
   }
   if (!best_ok && !(params.cancel && params.cancel())) {
     // Every attempt stalled: work on the one with fewest obtuse triangles left, then prune it.
-    const auto lns_end = timed ? t0 + (deadline - t0) * 9 / 10 : give_up;
+    const auto lns_end = timed ? t0 + (search_end - t0) * 9 / 10 : search_end;
     best_ok = unstick(best, params, cap, lns_end, timed ? 100000 : 200);
     if (best_ok) {
       result.n_refined = best.n_steiner();
