@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace acute {
 
@@ -58,7 +59,11 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   // are below exp(-6) each, and a move changes no angle outside the star. (Most of a CVT mesh is
   // such stars; the pattern search would spend up to 240 evaluations on each.)
   constexpr double kComfortableMarginDeg = 12.0;
-  if (star_margin(mesh, vh, bounds, forced) >= kComfortableMarginDeg) return false;
+  const double margin0 = star_margin(mesh, vh, bounds, forced);
+  if (margin0 >= kComfortableMarginDeg) return false;
+  // The soft minimum trades a little of the worst angle for much of the others: in a star with no
+  // bad triangle that trade must not make one (a graded hub patch lost its thin wall triangles so).
+  const bool keep_good = margin0 >= 0 && std::getenv("ACUTE_KEEP_GOOD");
   const Point2 start = point2(mesh, vh);
   double mean_edge = 0;
   int degree = 0;
@@ -93,8 +98,9 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
     if (p == best_p || can_relocate(mesh, vh, p) != OpVerdict::Ok) return false;
     set_point2(mesh, vh, p);
     const double m = star_energy(mesh, vh, bounds, forced);
+    const bool stays_good = !keep_good || !(m < best * (1 - 1e-12)) || star_margin(mesh, vh, bounds, forced) >= 0;
     set_point2(mesh, vh, best_p);
-    if (m < best * (1 - 1e-12)) {
+    if (m < best * (1 - 1e-12) && stays_good) {
       best = m;
       best_p = p;
       set_point2(mesh, vh, p);

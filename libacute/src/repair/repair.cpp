@@ -234,7 +234,7 @@ class Repairer {
         if ((++k & 4095) == 0 && out_of_time()) return;
         if (!is_input(mesh_, vh) && star_margin(mesh_, vh, bounds_, forced_) < 4.0) near.push_back(vh);
       }
-      smooth(near, 1);
+      if (!std::getenv("ACUTE_NO_GLOBAL")) smooth(near, 1);
     }
     // Local phase: each cluster's neighbourhood is copied, candidate operations are tried on the
     // copy, and the best one is written back when it improves the region.
@@ -316,7 +316,7 @@ class Repairer {
       }
     }
     for (auto vh : sub.vertices())
-      if (!sub.status(vh).deleted() && !on_frozen_border(sub, vh)) s.infeasible += infeasible_sectors(sub, vh);
+      if (!sub.status(vh).deleted() && !on_frozen_border(sub, vh)) s.infeasible += infeasible_sectors(sub, vh, is_forced(forced, vh));
     return s;
   }
 
@@ -330,8 +330,9 @@ class Repairer {
 
   /// Sectors around vh (between constrained or boundary edges; the whole star when none) whose
   /// angle phi split among k triangles cannot meet the bounds: phi / k >= max, or phi / k < min for a
-  /// sector not narrower than min. Frozen border vertices of a region copy are skipped by the caller.
-  std::size_t infeasible_sectors(const Mesh& sub, VertexHandle vh) const {
+  /// sector not narrower than min at a vertex not `exempt` (at a forced corner's vertex every
+  /// triangle is exempt from the min bound: a log-polar hub fans its wide sectors finely). Frozen border vertices of a region copy are skipped by the caller.
+  std::size_t infeasible_sectors(const Mesh& sub, VertexHandle vh, bool exempt) const {
     HalfedgeHandle start;
     for (auto heh : sub.voh_range(vh))
       if (!sub.is_boundary(heh) && is_segment_or_boundary(sub, heh)) start = heh;
@@ -349,11 +350,16 @@ class Repairer {
       if (sector.how == SectorEnd::Unfinished) break;
       budget -= sector.triangles;
       const double share = sector.degrees / sector.triangles;
-      if (share >= bounds_.max_deg - bounds_.margin_deg || (sector.degrees >= bounds_.min_deg && share < bounds_.min_deg)) ++count;
+      if (share >= bounds_.max_deg - bounds_.margin_deg || (!exempt && sector.degrees >= bounds_.min_deg && share < bounds_.min_deg)) ++count;
       h = sector.end;
       if (h == start || sub.is_boundary(h)) break;
     }
     return count;
+  }
+
+  static bool is_forced(const std::vector<bool>& forced, VertexHandle vh) {
+    const auto i = static_cast<std::size_t>(vh.idx());
+    return i < forced.size() && forced[i];
   }
 
   static bool face_is_exempt(const Mesh& mesh, FaceHandle fh, const std::vector<bool>& forced) {

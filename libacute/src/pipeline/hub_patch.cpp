@@ -1,0 +1,271 @@
+#include "pipeline/hub_patch.h"
+
+#include <acute/mesh/geometry.h>
+#include <acute/mesh/sectors.h>
+#include <acute/mesh/segments.h>
+#include <acute/ops/delaunay_flips.h>
+#include <acute/ops/insert.h>
+#include <acute/ops/remove.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <unordered_set>
+#include <vector>
+
+namespace acute::detail {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+/// The patch's inner radius (the hub's apex triangles) is its outer radius over e^kLogDepth.
+constexpr double kLogDepth = 1.1;
+/// Of the distance to the nearest feature not at the hub, and of the shortest wall.
+constexpr double kFeatureShare = 0.6, kWallShare = 0.45;
+/// Largest triangle of the log-polar mesh (radians): the exp map bends a chord of angle a by a / 2.
+constexpr double kMaxLogSize = 0.35;
+/// At most this many hubs are patched (each costs a copy of the mesh).
+constexpr int kMaxHubs = 16;
+
+struct Wall {
+  Point2 u;          ///< direction from the hub
+  double phi = 0;    ///< angle from the first wall, counter-clockwise
+  double length = 0; ///< to the segment's far end
+};
+
+struct HubPlan {
+  VertexHandle hub;
+  std::vector<Wall> walls;  ///< counter-clockwise, from phi = 0
+  /// Round a full fan: the widest sector, from the last wall to the first; the log-polar domain is
+  /// cut open in its middle. 0 at a boundary hub.
+  double cut_width = 0;
+  double narrowest = 0;
+  double radius = 0;
+};
+
+/// The hub's walls in counter-clockwise order, or empty when vh is no strip hub.
+bool plan_walls(const Mesh& mesh, VertexHandle vh, double strip_below, HubPlan& plan) {
+  bool partial = false;
+  const std::vector<SegmentSector> sectors = segment_sectors(mesh, vh, &partial);
+  if (partial || sectors.size() < 2) return false;
+  double narrowest = INFINITY, widest = 0;
+  for (const SegmentSector& s : sectors) narrowest = std::min(narrowest, s.radians), widest = std::max(widest, s.radians);
+  if (!(narrowest < strip_below) || !(widest >= 2 * strip_below)) return false;
+  // Chain the sectors: start at one no other sector ends at (a boundary hub); round a full fan,
+  // start after the widest sector, where the log-polar domain is cut open.
+  std::size_t start = sectors.size();
+  for (std::size_t i = 0; i < sectors.size(); ++i) {
+    bool ends_here = false;
+    for (const SegmentSector& t : sectors) ends_here = ends_here || t.last == sectors[i].first;
+    if (!ends_here) start = i;
+  }
+  const bool full = start == sectors.size();
+  if (full) {
+    std::size_t widest_i = 0;
+    for (std::size_t i = 0; i < sectors.size(); ++i)
+      if (sectors[i].radians > sectors[widest_i].radians) widest_i = i;
+    for (std::size_t j = 0; j < sectors.size(); ++j)
+      if (sectors[j].first == sectors[widest_i].last) start = j;
+    if (start == sectors.size()) return false;
+    plan.cut_width = widest;
+  }
+  const Point2 c = point2(mesh, vh);
+  auto wall_of = [&](HalfedgeHandle spoke, double phi) {
+    const auto& ends = segment_endpoints(mesh, mesh.data(mesh.edge_handle(spoke)).segment);
+    const Point2 far = (ends[0] - c).squaredNorm() > (ends[1] - c).squaredNorm() ? ends[0] : ends[1];
+    return Wall{(far - c).normalized(), phi, (far - c).norm()};
+  };
+  plan.walls.clear();
+  std::size_t i = start;
+  double phi = 0;
+  plan.walls.push_back(wall_of(sectors[i].first, 0));
+  // A full fan's last sector (the widest) closes back on the first wall: not listed twice.
+  for (std::size_t n = 0; n + (full ? 1 : 0) < sectors.size(); ++n) {
+    phi += sectors[i].radians;
+    plan.walls.push_back(wall_of(sectors[i].last, phi));
+    std::size_t next = sectors.size();
+    for (std::size_t j = 0; j < sectors.size(); ++j)
+      if (sectors[j].first == sectors[i].last) next = j;
+    if (next == sectors.size()) break;
+    i = next;
+  }
+  if (plan.walls.size() != (full ? sectors.size() : sectors.size() + 1)) return false;
+  plan.hub = vh;
+  plan.narrowest = narrowest;
+  return true;
+}
+
+/// Non-input vertices within `radius` of the hub, reached through such vertices.
+std::vector<VertexHandle> disk_vertices(const Mesh& mesh, VertexHandle hub, double radius) {
+  const Point2 c = point2(mesh, hub);
+  std::vector<VertexHandle> out, frontier{hub};
+  std::unordered_set<int> seen{hub.idx()};
+  while (!frontier.empty()) {
+    const VertexHandle v = frontier.back();
+    frontier.pop_back();
+    for (auto w : mesh.vv_range(v)) {
+      if (seen.count(w.idx()) || (point2(mesh, w) - c).norm() >= radius) continue;
+      seen.insert(w.idx());
+      if (is_input(mesh, w)) continue;
+      out.push_back(w);
+      frontier.push_back(w);
+    }
+  }
+  return out;
+}
+
+/// The median edge length of the mesh between radius and 2 radius from the hub.
+double spacing_around(const Mesh& mesh, VertexHandle hub, double radius) {
+  const Point2 c = point2(mesh, hub);
+  std::vector<double> lengths;
+  for (auto v : disk_vertices(mesh, hub, 2 * radius))
+    for (auto w : mesh.vv_range(v)) {
+      const Point2 m = 0.5 * (point2(mesh, v) + point2(mesh, w));
+      const double r = (m - c).norm();
+      if (r > radius && r < 2 * radius) lengths.push_back((point2(mesh, w) - point2(mesh, v)).norm());
+    }
+  if (lengths.empty()) return 0;
+  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+bool insert_patch(Mesh& mesh, const HubPlan& plan, const Mesh& log_mesh, double s_inner) {
+  const Point2 c = point2(mesh, plan.hub);
+  const std::size_t walls = plan.walls.size();
+  const double tol = 1e-12 * 2 * kPi;
+  // Round a full fan, the cut's second side (y = the cut + 2 pi) is its first one again.
+  const double cut_again = plan.walls.back().phi + 0.5 * plan.cut_width;
+  std::vector<std::vector<double>> wall_radii(walls);
+  std::vector<std::pair<double, double>> free_points;  // (phi, s)
+  for (auto v : log_mesh.vertices()) {
+    if (log_mesh.status(v).deleted()) continue;
+    const Point2 q = point2(log_mesh, v);
+    const double s = s_inner + q.x(), phi = q.y();
+    bool on_wall = false;
+    if (log_mesh.data(v).kind != VertexKind::Free) {
+      for (std::size_t i = 0; i < walls; ++i)
+        if (std::abs(phi - plan.walls[i].phi) <= tol) {
+          on_wall = true;
+          wall_radii[i].push_back(std::exp(s));
+        }
+      if (plan.cut_width > 0 && std::abs(phi - cut_again) <= tol) continue;
+    }
+    if (!on_wall) free_points.emplace_back(phi, s);
+  }
+  // Wall points, outermost first: each split shortens the wall's spoke at the hub.
+  for (std::size_t i = 0; i < walls; ++i) {
+    const Point2 u = plan.walls[i].u;
+    std::sort(wall_radii[i].rbegin(), wall_radii[i].rend());
+    HalfedgeHandle spoke;
+    for (auto h : mesh.voh_range(plan.hub))
+      if (is_constrained(mesh, mesh.edge_handle(h)) && (point2(mesh, mesh.to_vertex_handle(h)) - c).normalized().dot(u) > 1 - 1e-12) spoke = h;
+    if (!spoke.is_valid()) return false;
+    for (double r : wall_radii[i]) {
+      if ((point2(mesh, mesh.to_vertex_handle(spoke)) - c).norm() <= r) return false;
+      const VertexHandle m = split_edge(mesh, mesh.edge_handle(spoke), c + r * u);
+      if (!m.is_valid()) return false;
+      spoke = mesh.find_halfedge(plan.hub, m);
+      if (!spoke.is_valid()) return false;
+    }
+  }
+  std::sort(free_points.begin(), free_points.end());
+  const double phi0 = std::atan2(plan.walls[0].u.y(), plan.walls[0].u.x());
+  VertexHandle last;
+  auto insert_from = [&](const Point2& q, VertexHandle from) {
+    for (auto fh : mesh.vf_range(from)) {
+      const VertexHandle vh = insert_point(mesh, q, fh);
+      if (vh.is_valid()) {
+        last = vh;
+        return true;
+      }
+    }
+    return false;
+  };
+  for (const auto& [phi, s] : free_points) {
+    const Point2 q = c + std::exp(s) * Point2(std::cos(phi0 + phi), std::sin(phi0 + phi));
+    if (!((last.is_valid() && insert_from(q, last)) || insert_from(q, plan.hub))) return false;
+  }
+  make_delaunay(mesh);
+  return true;
+}
+
+}  // namespace
+
+int patch_strip_hubs(Mesh& mesh, const MeshOptions& options, double seconds) {
+  const double strip_below = options.min_angle_deg * kPi / 180;
+  if (!(strip_below > 0)) return 0;
+  const bool trace = std::getenv("ACUTE_TRACE") != nullptr;
+  std::vector<HubPlan> plans;
+  for (auto vh : mesh.vertices()) {
+    if (mesh.status(vh).deleted() || !is_input(mesh, vh)) continue;
+    HubPlan plan;
+    if (!plan_walls(mesh, vh, strip_below, plan)) continue;
+    const Point2 c = point2(mesh, vh);
+    double radius = INFINITY;
+    for (const Wall& w : plan.walls) radius = std::min(radius, kWallShare * w.length);
+    for (const auto& ends : segment_table(mesh))
+      if (ends[0] != c && ends[1] != c) radius = std::min(radius, kFeatureShare * distance_to_segment(c, ends[0], ends[1]));
+    if (!(radius > 0) || !std::isfinite(radius)) continue;
+    plan.radius = radius;
+    plans.push_back(std::move(plan));
+    if (static_cast<int>(plans.size()) >= kMaxHubs) break;
+  }
+  int patched = 0;
+  for (const HubPlan& plan : plans) {
+    const double spacing = spacing_around(mesh, plan.hub, plan.radius);
+    if (!(spacing > 0)) continue;
+    // The log-polar domain: x = ln(r / r_inner) in [0, kLogDepth], y = phi; walls are its
+    // horizontal segments, the inner and outer arcs its vertical sides.
+    Domain log_domain;
+    std::vector<double> lines;  // the walls' y, and round a full fan the cut's two sides
+    for (const Wall& w : plan.walls) lines.push_back(w.phi);
+    if (plan.cut_width > 0) {
+      lines.insert(lines.begin(), -0.5 * plan.cut_width);
+      lines.push_back(plan.walls.back().phi + 0.5 * plan.cut_width);
+    }
+    const std::size_t n = lines.size();
+    for (double y : lines) log_domain.points.emplace_back(0.0, y);
+    for (double y : lines) log_domain.points.emplace_back(kLogDepth, y);
+    for (std::size_t i = 0; i < n; ++i) log_domain.segments.push_back({static_cast<int>(i), static_cast<int>(n + i)});
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      log_domain.segments.push_back({static_cast<int>(i), static_cast<int>(i + 1)});
+      log_domain.segments.push_back({static_cast<int>(n + i), static_cast<int>(n + i + 1)});
+    }
+    log_domain.point_markers.assign(log_domain.points.size(), 0);
+    log_domain.segment_markers.assign(log_domain.segments.size(), 0);
+    log_domain.name = "hub patch";
+    MeshOptions lo;
+    lo.method = Method::Acute;
+    lo.min_angle_deg = options.min_angle_deg + 2;
+    lo.max_angle_deg = options.max_angle_deg - 3;
+    lo.gradation = options.gradation;
+    lo.max_size = std::clamp(spacing / plan.radius, 2 * plan.narrowest, kMaxLogSize);
+    lo.seed = options.seed;
+    lo.time_limit_s = seconds > 0 ? seconds / static_cast<double>(plans.size()) : 0;
+    MeshResult log_mesh;
+    try {
+      log_mesh = generate_mesh(log_domain, lo);
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (trace)
+      std::fprintf(stderr, "hub patch (%.6g, %.6g): radius %.4g, spacing %.4g, log size %.4g, %zu log vertices, %s\n", point2(mesh, plan.hub).x(),
+                   point2(mesh, plan.hub).y(), plan.radius, spacing, lo.max_size, log_mesh.mesh.n_vertices(),
+                   log_mesh.status == MeshStatus::Ok ? "acute" : "not acute");
+    if (log_mesh.status != MeshStatus::Ok) continue;
+    Mesh backup = mesh;
+    const std::vector<VertexHandle> doomed = disk_vertices(mesh, plan.hub, 1.05 * plan.radius);
+    if (!remove_vertices(mesh, doomed) || !insert_patch(mesh, plan, log_mesh.mesh, std::log(plan.radius) - kLogDepth)) {
+      if (trace) std::fprintf(stderr, "hub patch: insertion failed, hub left as it was\n");
+      mesh = std::move(backup);
+      continue;
+    }
+    ++patched;
+  }
+  if (patched > 0) collect_garbage(mesh);
+  return patched;
+}
+
+}  // namespace acute::detail

@@ -1,0 +1,22 @@
+// Private to the pipeline: strip hubs meshed in log-polar coordinates. At an input vertex where a
+// strip sector (narrower than the min bound) meets a wide one, the strip's first wall vertex is an
+// edge r from the hub on the wide side and a strip's width, r sin(theta), from its next wall
+// vertex: the wide side must grade from the strip's width to the hub's radius within a few
+// triangles, which the isotropic start does not do. In log-polar coordinates (ln r, phi) the hub's
+// walls are parallel lines, a strip is a band of constant height theta and the right grading is
+// an ordinary lfs-graded mesh. The map back, exp, is conformal: the angles of small triangles are
+// kept, near the walls (where the triangles are theta small) to within about theta / 2.
+#pragma once
+
+#include <acute/mesh/mesh.h>
+#include <acute/mesher.h>
+
+namespace acute::detail {
+
+/// Replaces the start mesh's disk around every strip hub (an input vertex with a sector narrower
+/// than options.min_angle_deg beside one at least twice as wide) by an acute mesh made in
+/// log-polar coordinates and mapped back. Returns the number of hubs patched; a hub whose patch
+/// cannot be made or inserted is left as it was (mesh then unchanged there).
+int patch_strip_hubs(Mesh& mesh, const MeshOptions& options, double seconds);
+
+}  // namespace acute::detail
