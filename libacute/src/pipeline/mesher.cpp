@@ -2,7 +2,6 @@
 
 #include <acute/core/errors.h>
 #include <acute/cvt/cvt.h>
-#include <acute/io/io.h>
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/segments.h>
 #include <acute/refine/refine.h>
@@ -13,7 +12,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <string>
 
 namespace acute {
@@ -170,15 +168,15 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
         // As the CVT start: at most half the time limit, the repair has the rest.
         refine_start(0.5 * options.time_limit_s - seconds_since(start));
       }
-      const int patched = std::getenv("ACUTE_HUB_PATCH") ? detail::patch_strip_hubs(result.mesh, options, 0.1 * options.time_limit_s) : 0;
-      if (const char* dump = std::getenv("ACUTE_DUMP_START")) io::write_mesh(result.mesh, dump);
       if (options.method == Method::Cvt) break;
+      // Strip hubs: the start's disk around each graded in log-polar coordinates (a tenth of the
+      // time left, at most).
+      detail::patch_strip_hubs(result.mesh, options, options.time_limit_s > 0 ? 0.1 * (options.time_limit_s - seconds_since(start)) : 0);
       result.start_vertices = result.mesh.n_vertices();
       notify("repair");
       RepairParams params;
       params.bounds.min_deg = options.min_angle_deg;
       params.bounds.max_deg = options.max_angle_deg;
-      if (patched > 0 && std::getenv("ACUTE_NO_GRADE")) params.grade_sharp_corners = false;
       if (options.max_iterations > 0) params.max_iterations = options.max_iterations;
       params.max_vertices = options.max_vertices;
       if (options.time_limit_s > 0) params.time_limit_s = std::max(options.time_limit_s - seconds_since(start), 1e-9);

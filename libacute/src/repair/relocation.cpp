@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 namespace acute {
 
@@ -63,7 +62,7 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   if (margin0 >= kComfortableMarginDeg) return false;
   // The soft minimum trades a little of the worst angle for much of the others: in a star with no
   // bad triangle that trade must not make one (a graded hub patch lost its thin wall triangles so).
-  const bool keep_good = margin0 >= 0 && std::getenv("ACUTE_KEEP_GOOD");
+  const bool keep_good = margin0 >= 0;
   const Point2 start = point2(mesh, vh);
   double mean_edge = 0;
   int degree = 0;

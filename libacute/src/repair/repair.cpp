@@ -234,7 +234,7 @@ class Repairer {
         if ((++k & 4095) == 0 && out_of_time()) return;
         if (!is_input(mesh_, vh) && star_margin(mesh_, vh, bounds_, forced_) < 4.0) near.push_back(vh);
       }
-      if (!std::getenv("ACUTE_NO_GLOBAL")) smooth(near, 1);
+      smooth(near, 1);
     }
     // Local phase: each cluster's neighbourhood is copied, candidate operations are tried on the
     // copy, and the best one is written back when it improves the region.
