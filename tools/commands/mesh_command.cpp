@@ -155,6 +155,8 @@ void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code
   auto* size = cmd->add_option("--size", args->options.size, "Target edge length");
   cmd->add_option("--vertices", args->options.target_vertices, "Target vertex count")->excludes(size);
   cmd->add_option("--gradation", args->options.gradation, "Size gradation factor")->capture_default_str();
+  cmd->add_option("--max-size", args->options.max_size, "Largest edge length of the graded size field (default: a fraction of the domain's diameter)")
+      ->excludes(size);
   cmd->add_option("--seed", args->options.seed, "Random seed (deterministic output)")->capture_default_str();
   cmd->add_option("--max-iterations", args->options.max_iterations, "Iteration cap (0: method default)");
   cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();

@@ -22,6 +22,9 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 /// The patch's inner radius (the hub's apex triangles) is its outer radius over e^kLogDepth.
 constexpr double kLogDepth = 1.1;
+/// The log-polar mesh reaches this much further out; its points there are dropped: its outer
+/// corners (where the walls meet its outer side at right angles) are then no constraint.
+constexpr double kLogOverhang = 0.3;
 /// Of the distance to the nearest feature not at the hub, and of the shortest wall.
 constexpr double kFeatureShare = 0.6, kWallShare = 0.45;
 /// Largest triangle of the log-polar mesh (radians): the exp map bends a chord of angle a by a / 2.
@@ -142,6 +145,7 @@ bool insert_patch(Mesh& mesh, const HubPlan& plan, const Mesh& log_mesh, double 
   for (auto v : log_mesh.vertices()) {
     if (log_mesh.status(v).deleted()) continue;
     const Point2 q = point2(log_mesh, v);
+    if (q.x() > kLogDepth) continue;
     const double s = s_inner + q.x(), phi = q.y();
     bool on_wall = false;
     if (log_mesh.data(v).kind != VertexKind::Free) {
@@ -191,11 +195,36 @@ bool insert_patch(Mesh& mesh, const HubPlan& plan, const Mesh& log_mesh, double 
   return true;
 }
 
+/// An acute mesh of the log-polar domain, its overhang (x > kLogDepth) excepted. The repair is
+/// sometimes slow on the right-angled corners where the walls meet the inner side; a fresh seed
+/// usually is not: a few attempts of at most kAttemptSeconds each (of `seconds` when > 0).
+bool mesh_log_domain(const Domain& domain, MeshOptions options, unsigned seed, double seconds, Mesh& out) {
+  constexpr int kAttempts = 3;
+  constexpr double kAttemptSeconds = 2.0;
+  for (int attempt = 0; attempt < kAttempts; ++attempt) {
+    options.seed = seed + static_cast<unsigned>(attempt);
+    options.time_limit_s = seconds > 0 ? std::min(kAttemptSeconds, seconds / kAttempts) : kAttemptSeconds;
+    MeshResult r;
+    try {
+      r = generate_mesh(domain, options);
+    } catch (const std::exception&) {
+      return false;
+    }
+    bool usable = r.status == MeshStatus::Ok || r.remaining.size() < 100;
+    for (const BadTriangle& t : r.remaining) usable = usable && std::max({t.corners[0].x(), t.corners[1].x(), t.corners[2].x()}) > kLogDepth;
+    if (usable) {
+      out = std::move(r.mesh);
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
-int patch_strip_hubs(Mesh& mesh, const MeshOptions& options, double seconds) {
+std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, double seconds) {
   const double strip_below = options.min_angle_deg * kPi / 180;
-  if (!(strip_below > 0)) return 0;
+  if (!(strip_below > 0)) return {};
   const bool trace = std::getenv("ACUTE_TRACE") != nullptr;
   std::vector<HubPlan> plans;
   for (auto vh : mesh.vertices()) {
@@ -212,7 +241,7 @@ int patch_strip_hubs(Mesh& mesh, const MeshOptions& options, double seconds) {
     plans.push_back(std::move(plan));
     if (static_cast<int>(plans.size()) >= kMaxHubs) break;
   }
-  int patched = 0;
+  std::vector<Point2> patched;
   for (const HubPlan& plan : plans) {
     const double spacing = spacing_around(mesh, plan.hub, plan.radius);
     if (!(spacing > 0)) continue;
@@ -227,7 +256,7 @@ int patch_strip_hubs(Mesh& mesh, const MeshOptions& options, double seconds) {
     }
     const std::size_t n = lines.size();
     for (double y : lines) log_domain.points.emplace_back(0.0, y);
-    for (double y : lines) log_domain.points.emplace_back(kLogDepth, y);
+    for (double y : lines) log_domain.points.emplace_back(kLogDepth + kLogOverhang, y);
     for (std::size_t i = 0; i < n; ++i) log_domain.segments.push_back({static_cast<int>(i), static_cast<int>(n + i)});
     for (std::size_t i = 0; i + 1 < n; ++i) {
       log_domain.segments.push_back({static_cast<int>(i), static_cast<int>(i + 1)});
@@ -242,29 +271,25 @@ int patch_strip_hubs(Mesh& mesh, const MeshOptions& options, double seconds) {
     lo.max_angle_deg = options.max_angle_deg - 3;
     lo.gradation = options.gradation;
     lo.max_size = std::clamp(spacing / plan.radius, 2 * plan.narrowest, kMaxLogSize);
-    lo.seed = options.seed;
-    lo.time_limit_s = seconds > 0 ? seconds / static_cast<double>(plans.size()) : 0;
-    MeshResult log_mesh;
-    try {
-      log_mesh = generate_mesh(log_domain, lo);
-    } catch (const std::exception&) {
+    const double share = seconds > 0 ? seconds / static_cast<double>(plans.size()) : 0;
+    Mesh log_mesh;
+    if (!mesh_log_domain(log_domain, lo, options.seed, share, log_mesh)) {
+      if (trace) std::fprintf(stderr, "hub patch (%.6g, %.6g): no acute log-polar mesh, hub left as it was\n", point2(mesh, plan.hub).x(), point2(mesh, plan.hub).y());
       continue;
     }
     if (trace)
-      std::fprintf(stderr, "hub patch (%.6g, %.6g): radius %.4g, spacing %.4g, log size %.4g, %zu log vertices, %s\n", point2(mesh, plan.hub).x(),
-                   point2(mesh, plan.hub).y(), plan.radius, spacing, lo.max_size, log_mesh.mesh.n_vertices(),
-                   log_mesh.status == MeshStatus::Ok ? "acute" : "not acute");
-    if (log_mesh.status != MeshStatus::Ok) continue;
+      std::fprintf(stderr, "hub patch (%.6g, %.6g): radius %.4g, spacing %.4g, log size %.4g, %zu log vertices\n", point2(mesh, plan.hub).x(),
+                   point2(mesh, plan.hub).y(), plan.radius, spacing, lo.max_size, log_mesh.n_vertices());
     Mesh backup = mesh;
     const std::vector<VertexHandle> doomed = disk_vertices(mesh, plan.hub, 1.05 * plan.radius);
-    if (!remove_vertices(mesh, doomed) || !insert_patch(mesh, plan, log_mesh.mesh, std::log(plan.radius) - kLogDepth)) {
+    if (!remove_vertices(mesh, doomed) || !insert_patch(mesh, plan, log_mesh, std::log(plan.radius) - kLogDepth)) {
       if (trace) std::fprintf(stderr, "hub patch: insertion failed, hub left as it was\n");
       mesh = std::move(backup);
       continue;
     }
-    ++patched;
+    patched.push_back(point2(mesh, plan.hub));
   }
-  if (patched > 0) collect_garbage(mesh);
+  if (!patched.empty()) collect_garbage(mesh);
   return patched;
 }
 

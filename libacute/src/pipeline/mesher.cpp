@@ -72,6 +72,7 @@ void check_options(const MeshOptions& o) {
   if (o.max_angle_deg <= 60 || o.min_angle_deg >= 60)
     throw InvalidInput("unsatisfiable angle bounds: every triangle has an angle >= 60 and one <= 60 degrees");
   if (o.size < 0 || !std::isfinite(o.size)) throw InvalidInput("--size must be a positive number");
+  if (o.max_size < 0 || !std::isfinite(o.max_size)) throw InvalidInput("--max-size must be a positive number");
   if (!(o.gradation >= 1.0)) throw InvalidInput("--gradation must be at least 1");
 }
 
@@ -171,12 +172,14 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       if (options.method == Method::Cvt) break;
       // Strip hubs: the start's disk around each graded in log-polar coordinates (a tenth of the
       // time left, at most).
-      detail::patch_strip_hubs(result.mesh, options, options.time_limit_s > 0 ? 0.1 * (options.time_limit_s - seconds_since(start)) : 0);
+      const std::vector<Point2> patched_hubs =
+          detail::patch_strip_hubs(result.mesh, options, options.time_limit_s > 0 ? 0.1 * (options.time_limit_s - seconds_since(start)) : 0);
       result.start_vertices = result.mesh.n_vertices();
       notify("repair");
       RepairParams params;
       params.bounds.min_deg = options.min_angle_deg;
       params.bounds.max_deg = options.max_angle_deg;
+      params.graded_corners = patched_hubs;
       if (options.max_iterations > 0) params.max_iterations = options.max_iterations;
       params.max_vertices = options.max_vertices;
       if (options.time_limit_s > 0) params.time_limit_s = std::max(options.time_limit_s - seconds_since(start), 1e-9);

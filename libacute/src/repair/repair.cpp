@@ -158,7 +158,7 @@ class Repairer {
     bool changed = false;
     for (const detail::SharpCorner& corner : detail::find_sharp_corners(mesh_, bounds_.min_deg * kPi / 180)) {
       if (out_of_time()) break;
-      if (mesh_.status(corner.apex).deleted()) continue;
+      if (mesh_.status(corner.apex).deleted() || graded_already(corner.apex)) continue;
       changed = rebuild_disk(corner.apex, 1.5 * corner.radius, "sharp corner", [&](Mesh& sub, VertexHandle apex) {
                   return detail::build_polar_fan(sub, apex, corner.radius, detail::kPolarFanRings);
                 }) || changed;
@@ -176,7 +176,7 @@ class Repairer {
     const double strip_below = bounds_.min_deg * kPi / 180;
     std::vector<std::pair<VertexHandle, double>> hubs;
     for (auto vh : mesh_.vertices())
-      if (!mesh_.status(vh).deleted() && is_input(mesh_, vh) && forced(vh))
+      if (!mesh_.status(vh).deleted() && is_input(mesh_, vh) && forced(vh) && !graded_already(vh))
         if (const double reach = detail::hub_ring_reach(mesh_, vh, strip_below); reach > 0) hubs.emplace_back(vh, reach);
     bool changed = false;
     for (const auto& [apex, reach] : hubs) {
@@ -188,6 +188,11 @@ class Repairer {
       collect_garbage(mesh_);
       refresh_forced();
     }
+  }
+
+  bool graded_already(VertexHandle vh) const {
+    const auto& done = params_.graded_corners;
+    return std::find(done.begin(), done.end(), point2(mesh_, vh)) != done.end();
   }
 
   bool forced(VertexHandle vh) const {

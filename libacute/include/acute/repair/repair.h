@@ -28,6 +28,9 @@ struct RepairParams {
   /// Before the first iteration, rebuild the disk around every forced corner (a sector narrower
   /// than the min bound) as a graded log-polar fan, kept where it leaves fewer infeasible vertices.
   bool grade_sharp_corners = true;
+  /// Input vertices (by position) whose disks the caller has graded already (the pipeline's
+  /// log-polar hub patches): left out of that rebuild.
+  std::vector<Point2> graded_corners;
   double time_limit_s = 0;         ///< 0: none
   std::function<void(const RepairProgress&)> observer;
   std::function<bool()> cancel;    ///< returns true to stop early
