@@ -7,4 +7,5 @@ acute_add_test(pipeline_tests
     pipeline/resource_bounds_test.cpp
     pipeline/convex_hull_test.cpp
     pipeline/mesh_domain_test.cpp
+    pipeline/hub_patch_test.cpp
   LIBS acute_pipeline acute_io nlohmann_json::nlohmann_json)

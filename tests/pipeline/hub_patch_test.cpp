@@ -1,0 +1,117 @@
+// Strip hubs meshed in log-polar coordinates (pipeline/hub_patch.h): the patch is valid, conforming
+// and acute where it was put, and the whole pipeline then meets [30, 90) on hubs the CVT start
+// alone could not (la.poly's 4-degree hub, issue 5).
+#include <acute/mesh/geometry.h>
+#include <acute/mesher.h>
+#include <acute/repair/angle_bounds.h>
+
+#include "pipeline/hub_patch.h"
+#include "support/domain_verify.h"
+#include "support/mesh_verify.h"
+#include "support/wedge_domains.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace acute {
+namespace {
+
+using test::polar;
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// la.poly's hub at (16.07, 0), moved to the origin: on a straight boundary, strips of 4.1 and 5.6
+/// degrees below it beside a 170-degree sector, and 0.46 below that a segment (a channel floor)
+/// that keeps the patch small.
+Domain strip_hub_on_a_wall_above_a_channel() {
+  Domain d;
+  d.points = {Point2(-4, -3), Point2(4, -3), Point2(4, 0), Point2(0, 0), Point2(-4, 0), polar(1.88, 184.1), polar(1.37, -5.6),
+              Point2(-0.342, -0.471), Point2(1.3675, -0.4375)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 0}, {3, 5}, {3, 6}, {7, 8}};
+  return d;
+}
+
+/// An interior hub: three segments leave (0, 0) at -3, 0 and 8 degrees, so strips of 3 and 8
+/// degrees share a wall beside a 349-degree sector (the log-polar domain is cut open in it).
+Domain two_strips_sharing_a_wall_inside_a_square() {
+  Domain d;
+  d.points = {Point2(-10, -10), Point2(10, -10), Point2(10, 10), Point2(-10, 10), Point2(0, 0), polar(8, 0), polar(8, 8), polar(6, -3)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {4, 6}, {4, 7}};
+  return d;
+}
+
+/// Bad triangles among those with every corner within `radius` of the origin, and their centroid
+/// more than 45 degrees from the direction `seam_deg` (where a full fan's log-polar mesh was cut
+/// open, and its two sides meet unmatched: left to the repair): an angle of 90 or more, or one
+/// below 30 not at a forced corner's vertex.
+int bad_within(const Mesh& mesh, double radius, double seam_deg = 1000) {
+  const auto forced = forced_corner_vertices(mesh, 30);
+  int bad = 0;
+  for (auto fh : mesh.faces()) {
+    const auto p = face_points(mesh, fh);
+    if (std::max({p[0].norm(), p[1].norm(), p[2].norm()}) > radius) continue;
+    const Point2 g = (p[0] + p[1] + p[2]) / 3;
+    const double off_seam = std::abs(std::remainder(std::atan2(g.y(), g.x()) * 180 / kPi - seam_deg, 360.0));
+    if (off_seam < 45) continue;
+    bool exempt = false;
+    for (auto vh : mesh.fv_range(fh)) exempt = exempt || forced[static_cast<std::size_t>(vh.idx())];
+    const auto a = angles_deg(p[0], p[1], p[2]);
+    if (*std::max_element(a.begin(), a.end()) >= 90 || (!exempt && *std::min_element(a.begin(), a.end()) < 30)) ++bad;
+  }
+  return bad;
+}
+
+struct HubCase {
+  const char* name;
+  Domain domain;
+  double inside;  ///< a radius well inside the patch (the patch's own: 0.28 and 2.7)
+  double seam_deg = 1000;  ///< a full fan's cut: the middle of its widest sector
+};
+
+std::vector<HubCase> hub_cases() {
+  return {{"strip_hub_on_a_wall_above_a_channel", strip_hub_on_a_wall_above_a_channel(), 0.2},
+          {"two_strips_sharing_a_wall_inside_a_square", two_strips_sharing_a_wall_inside_a_square(), 2.0, 182.5}};
+}
+
+TEST(HubPatch, the_patched_start_is_valid_conforming_and_acute_around_the_hub) {
+  for (const HubCase& c : hub_cases()) {
+    SCOPED_TRACE(c.name);
+    Mesh mesh = test::cvt_mesh(c.domain, 2000);
+    const double area = test::total_area(mesh);
+    MeshOptions options;
+    const std::vector<Point2> hubs = detail::patch_strip_hubs(mesh, options, 0);
+    ASSERT_EQ(hubs.size(), 1u);
+    EXPECT_EQ(hubs[0], Point2(0, 0));
+    EXPECT_EQ(test::verify_valid(mesh), "");
+    EXPECT_EQ(test::verify_conforms(mesh, c.domain, area), "");
+    EXPECT_EQ(bad_within(mesh, c.inside, c.seam_deg), 0);
+  }
+}
+
+TEST(HubPatch, domains_without_a_strip_beside_a_wide_sector_are_left_alone) {
+  // A plain sharp wedge (one sector), and two 40-degree sectors between segments: no strip hub.
+  for (const Domain& d : {test::sharp_wedge(12), test::wedge_between_segments(40)}) {
+    Mesh mesh = test::cvt_mesh(d, 600);
+    const std::size_t before = mesh.n_vertices();
+    EXPECT_TRUE(detail::patch_strip_hubs(mesh, MeshOptions{}, 0).empty());
+    EXPECT_EQ(mesh.n_vertices(), before);
+  }
+}
+
+TEST(HubPatch, the_pipeline_meets_the_bounds_at_strip_hubs) {
+  for (const HubCase& c : hub_cases()) {
+    SCOPED_TRACE(c.name);
+    MeshOptions options;
+    options.target_vertices = 2000;
+    const MeshResult r = generate_mesh(c.domain, options);
+    EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
+    EXPECT_EQ(test::verify_valid(r.mesh), "");
+    EXPECT_EQ(test::verify_conforms(r.mesh, c.domain, mesh_area(build_domain_cdt(c.domain))), "");
+    EXPECT_EQ(bad_within(r.mesh, 1e9), 0);
+  }
+}
+
+}  // namespace
+}  // namespace acute
