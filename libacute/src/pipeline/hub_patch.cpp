@@ -8,6 +8,7 @@
 #include <acute/ops/remove.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -25,6 +26,9 @@ constexpr double kLogDepth = 1.1;
 /// The log-polar mesh reaches this much further out; its points there are dropped: its outer
 /// corners (where the walls meet its outer side at right angles) are then no constraint.
 constexpr double kLogOverhang = 0.3;
+/// A strip's head point is this many strip heights past its inner side: its triangle on the apex
+/// triangle's base then has angles of 50, 50 and 80 degrees.
+constexpr double kHeadDepth = 0.6;
 /// Of the distance to the nearest feature not at the hub, and of the shortest wall.
 constexpr double kFeatureShare = 0.6, kWallShare = 0.45;
 /// Largest triangle of the log-polar mesh (radians): the exp map bends a chord of angle a by a / 2.
@@ -205,6 +209,7 @@ bool mesh_log_domain(const Domain& domain, MeshOptions options, unsigned seed, d
     options.seed = seed + static_cast<unsigned>(attempt);
     options.time_limit_s = seconds > 0 ? std::min(kAttemptSeconds, seconds / kAttempts) : kAttemptSeconds;
     MeshResult r;
+    const auto t0 = std::chrono::steady_clock::now();
     try {
       r = generate_mesh(domain, options);
     } catch (const std::exception&) {
@@ -212,6 +217,9 @@ bool mesh_log_domain(const Domain& domain, MeshOptions options, unsigned seed, d
     }
     bool usable = r.status == MeshStatus::Ok || r.remaining.size() < 100;
     for (const BadTriangle& t : r.remaining) usable = usable && std::max({t.corners[0].x(), t.corners[1].x(), t.corners[2].x()}) > kLogDepth;
+    if (std::getenv("ACUTE_TRACE"))
+      std::fprintf(stderr, "  log-polar mesh, seed %u: %zu vertices, %zu bad, %d iterations, %.2f s%s\n", options.seed, r.mesh.n_vertices(), r.remaining.size(),
+                   r.iterations, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), usable ? "" : " (not usable)");
     if (usable) {
       out = std::move(r.mesh);
       return true;
@@ -245,8 +253,9 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
   for (const HubPlan& plan : plans) {
     const double spacing = spacing_around(mesh, plan.hub, plan.radius);
     if (!(spacing > 0)) continue;
-    // The log-polar domain: x = ln(r / r_inner) in [0, kLogDepth], y = phi; walls are its
-    // horizontal segments, the inner and outer arcs its vertical sides.
+    // The log-polar domain: x = ln(r / r_inner), y = phi. The walls are its horizontal segments
+    // from the inner side x = 0 (the apex triangles' bases) to x = kLogDepth (the patch's radius);
+    // the two outermost lines reach on over the overhang to its outer side.
     Domain log_domain;
     std::vector<double> lines;  // the walls' y, and round a full fan the cut's two sides
     for (const Wall& w : plan.walls) lines.push_back(w.phi);
@@ -254,13 +263,18 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
       lines.insert(lines.begin(), -0.5 * plan.cut_width);
       lines.push_back(plan.walls.back().phi + 0.5 * plan.cut_width);
     }
-    const std::size_t n = lines.size();
+    const int n = static_cast<int>(lines.size());
     for (double y : lines) log_domain.points.emplace_back(0.0, y);
-    for (double y : lines) log_domain.points.emplace_back(kLogDepth + kLogOverhang, y);
-    for (std::size_t i = 0; i < n; ++i) log_domain.segments.push_back({static_cast<int>(i), static_cast<int>(n + i)});
-    for (std::size_t i = 0; i + 1 < n; ++i) {
-      log_domain.segments.push_back({static_cast<int>(i), static_cast<int>(i + 1)});
-      log_domain.segments.push_back({static_cast<int>(n + i), static_cast<int>(n + i + 1)});
+    for (int i = 0; i < n; ++i)
+      log_domain.points.emplace_back(i == 0 || i == n - 1 ? kLogDepth + kLogOverhang : kLogDepth, lines[static_cast<std::size_t>(i)]);
+    for (int i = 0; i < n; ++i) log_domain.segments.push_back({i, n + i});
+    for (int i = 0; i + 1 < n; ++i) log_domain.segments.push_back({i, i + 1});
+    log_domain.segments.push_back({n, 2 * n - 1});
+    // Each strip's head: a point on its midline past its inner side, where the apex triangle's
+    // base and the two right-angled corners beside it need one (the repair is slow to find it).
+    for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+      const double h = lines[i + 1] - lines[i];
+      if (h < strip_below) log_domain.points.emplace_back(kHeadDepth * h, lines[i] + 0.5 * h);
     }
     log_domain.point_markers.assign(log_domain.points.size(), 0);
     log_domain.segment_markers.assign(log_domain.segments.size(), 0);
@@ -276,6 +290,11 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
     if (!mesh_log_domain(log_domain, lo, options.seed, share, log_mesh)) {
       if (trace) std::fprintf(stderr, "hub patch (%.6g, %.6g): no acute log-polar mesh, hub left as it was\n", point2(mesh, plan.hub).x(), point2(mesh, plan.hub).y());
       continue;
+    }
+    if (trace) {
+      std::fprintf(stderr, "hub patch sectors (degrees):");
+      for (std::size_t i = 0; i + 1 < lines.size(); ++i) std::fprintf(stderr, " %.3g", (lines[i + 1] - lines[i]) * 180 / kPi);
+      std::fprintf(stderr, "\n");
     }
     if (trace)
       std::fprintf(stderr, "hub patch (%.6g, %.6g): radius %.4g, spacing %.4g, log size %.4g, %zu log vertices\n", point2(mesh, plan.hub).x(),
