@@ -3,7 +3,6 @@
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/sectors.h>
 #include <acute/mesh/segments.h>
-#include <acute/ops/delaunay_flips.h>
 #include <acute/ops/insert.h>
 #include <acute/ops/remove.h>
 
@@ -195,8 +194,7 @@ bool insert_patch(Mesh& mesh, const HubPlan& plan, const Mesh& log_mesh, double 
     const Point2 q = c + std::exp(s) * Point2(std::cos(phi0 + phi), std::sin(phi0 + phi));
     if (!((last.is_valid() && insert_from(q, last)) || insert_from(q, plan.hub))) return false;
   }
-  make_delaunay(mesh);
-  return true;
+  return true;  // (every insertion and split restores the Delaunay property around it)
 }
 
 /// An acute mesh of the log-polar domain, its overhang (x > kLogDepth) excepted. The repair is
@@ -250,6 +248,7 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
     if (static_cast<int>(plans.size()) >= kMaxHubs) break;
   }
   std::vector<Point2> patched;
+  const std::size_t vertices_before = mesh.n_vertices();
   for (const HubPlan& plan : plans) {
     const double spacing = spacing_around(mesh, plan.hub, plan.radius);
     if (!(spacing > 0)) continue;
@@ -292,13 +291,11 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
       continue;
     }
     if (trace) {
-      std::fprintf(stderr, "hub patch sectors (degrees):");
+      std::fprintf(stderr, "hub patch (%.6g, %.6g): radius %.4g, spacing %.4g, log size %.4g, %zu log vertices; sectors (degrees)", point2(mesh, plan.hub).x(),
+                   point2(mesh, plan.hub).y(), plan.radius, spacing, lo.max_size, log_mesh.n_vertices());
       for (std::size_t i = 0; i + 1 < lines.size(); ++i) std::fprintf(stderr, " %.3g", (lines[i + 1] - lines[i]) * 180 / kPi);
       std::fprintf(stderr, "\n");
     }
-    if (trace)
-      std::fprintf(stderr, "hub patch (%.6g, %.6g): radius %.4g, spacing %.4g, log size %.4g, %zu log vertices\n", point2(mesh, plan.hub).x(),
-                   point2(mesh, plan.hub).y(), plan.radius, spacing, lo.max_size, log_mesh.n_vertices());
     Mesh backup = mesh;
     const std::vector<VertexHandle> doomed = disk_vertices(mesh, plan.hub, 1.05 * plan.radius);
     if (!remove_vertices(mesh, doomed) || !insert_patch(mesh, plan, log_mesh, std::log(plan.radius) - kLogDepth)) {
@@ -309,6 +306,7 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
     patched.push_back(point2(mesh, plan.hub));
   }
   if (!patched.empty()) collect_garbage(mesh);
+  if (trace && !plans.empty()) std::fprintf(stderr, "hub patches: %zu of %zu hubs, %zu vertices before, %zu after\n", patched.size(), plans.size(), vertices_before, mesh.n_vertices());
   return patched;
 }
 

@@ -170,10 +170,10 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
         refine_start(0.5 * options.time_limit_s - seconds_since(start));
       }
       if (options.method == Method::Cvt) break;
-      // Strip hubs: the start's disk around each graded in log-polar coordinates (a tenth of the
-      // time left, at most).
-      const std::vector<Point2> patched_hubs =
-          detail::patch_strip_hubs(result.mesh, options, options.time_limit_s > 0 ? 0.1 * (options.time_limit_s - seconds_since(start)) : 0);
+      // Strip hubs: the start's disk around each graded in log-polar coordinates (with a time limit,
+      // within 30% of the time left: without a patch such a hub seldom meets the bounds at all).
+      const double patch_seconds = options.time_limit_s > 0 ? std::max(0.3 * (options.time_limit_s - seconds_since(start)), 1e-9) : 0;
+      const std::vector<Point2> patched_hubs = detail::patch_strip_hubs(result.mesh, options, patch_seconds);
       result.start_vertices = result.mesh.n_vertices();
       notify("repair");
       RepairParams params;
