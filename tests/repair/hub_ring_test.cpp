@@ -61,7 +61,7 @@ HubRegion hub_region(std::size_t vertices) {
   const auto forced = forced_corner_vertices(h.mesh, 30);
   const double reach = detail::hub_ring_reach(h.mesh, apex, kStrip);
   EXPECT_GT(reach, 0) << "the hub has a wide sector beside a strip";
-  EXPECT_TRUE(detail::extract_region(h.mesh, detail::vertices_near(h.mesh, apex, 1.6 * reach), forced, h.region));
+  EXPECT_TRUE(detail::extract_region(h.mesh, vertices_near(h.mesh, apex, 1.6 * reach), forced, h.region));
   h.apex = vertex_at(h.region.sub, Point2(0, 0));
   return h;
 }
@@ -175,7 +175,7 @@ TEST(EqualiseStripApexes, strips_side_by_side_sharing_a_wall_all_end_isosceles) 
       const VertexHandle apex_big = vertex_at(mesh, Point2(0, 0));
       ASSERT_TRUE(apex_big.is_valid());
       detail::Region region;
-      ASSERT_TRUE(detail::extract_region(mesh, detail::vertices_near(mesh, apex_big, 3.0), forced_corner_vertices(mesh, strip_deg), region));
+      ASSERT_TRUE(detail::extract_region(mesh, vertices_near(mesh, apex_big, 3.0), forced_corner_vertices(mesh, strip_deg), region));
       Mesh sub = region.sub;
       const VertexHandle apex = vertex_at(sub, Point2(0, 0));
       ASSERT_TRUE(apex.is_valid());

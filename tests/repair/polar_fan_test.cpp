@@ -106,7 +106,7 @@ TEST(BuildPolarFan, every_wall_vertex_gets_three_triangles_per_sector_and_the_me
       if (point2(mesh, c.apex) == Point2(0, 0)) corner = &c;
     ASSERT_NE(corner, nullptr);
     detail::Region region;
-    ASSERT_TRUE(detail::extract_region(mesh, detail::vertices_near(mesh, corner->apex, 1.5 * corner->radius),
+    ASSERT_TRUE(detail::extract_region(mesh, vertices_near(mesh, corner->apex, 1.5 * corner->radius),
                                        forced_corner_vertices(mesh, 30), region));
     Mesh sub = region.sub;
     const VertexHandle apex = vertex_at(sub, Point2(0, 0));

@@ -1,6 +1,7 @@
 // Layer: mesh. Whole-mesh helpers: boundary constraints, compaction.
 #include <acute/mesh/mesh.h>
 
+#include <unordered_set>
 #include <vector>
 
 namespace acute {
@@ -27,6 +28,24 @@ int mark_boundary_as_constrained(Mesh& mesh) {
     } while (heh != start && !seen[heh.idx()]);
   }
   return n_segments;
+}
+
+std::vector<VertexHandle> vertices_near(const Mesh& mesh, VertexHandle centre, double radius) {
+  const Point2 c = point2(mesh, centre);
+  std::vector<VertexHandle> out, frontier{centre};
+  std::unordered_set<int> seen{centre.idx()};
+  while (!frontier.empty()) {
+    const VertexHandle v = frontier.back();
+    frontier.pop_back();
+    for (auto w : mesh.vv_range(v)) {
+      if (seen.count(w.idx()) || (point2(mesh, w) - c).norm() >= radius) continue;
+      seen.insert(w.idx());
+      if (is_input(mesh, w)) continue;
+      out.push_back(w);
+      frontier.push_back(w);
+    }
+  }
+  return out;
 }
 
 std::vector<VertexHandle> with_rings(const Mesh& mesh, std::vector<VertexHandle> seeds, int rings, std::vector<char>& seen) {

@@ -12,7 +12,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
-#include <unordered_set>
 #include <vector>
 
 namespace acute::detail {
@@ -103,30 +102,11 @@ bool plan_walls(const Mesh& mesh, VertexHandle vh, double strip_below, HubPlan& 
   return true;
 }
 
-/// Non-input vertices within `radius` of the hub, reached through such vertices.
-std::vector<VertexHandle> disk_vertices(const Mesh& mesh, VertexHandle hub, double radius) {
-  const Point2 c = point2(mesh, hub);
-  std::vector<VertexHandle> out, frontier{hub};
-  std::unordered_set<int> seen{hub.idx()};
-  while (!frontier.empty()) {
-    const VertexHandle v = frontier.back();
-    frontier.pop_back();
-    for (auto w : mesh.vv_range(v)) {
-      if (seen.count(w.idx()) || (point2(mesh, w) - c).norm() >= radius) continue;
-      seen.insert(w.idx());
-      if (is_input(mesh, w)) continue;
-      out.push_back(w);
-      frontier.push_back(w);
-    }
-  }
-  return out;
-}
-
 /// The median edge length of the mesh between radius and 2 radius from the hub.
 double spacing_around(const Mesh& mesh, VertexHandle hub, double radius) {
   const Point2 c = point2(mesh, hub);
   std::vector<double> lengths;
-  for (auto v : disk_vertices(mesh, hub, 2 * radius))
+  for (auto v : vertices_near(mesh, hub, 2 * radius))
     for (auto w : mesh.vv_range(v)) {
       const Point2 m = 0.5 * (point2(mesh, v) + point2(mesh, w));
       const double r = (m - c).norm();
@@ -297,7 +277,7 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
       std::fprintf(stderr, "\n");
     }
     Mesh backup = mesh;
-    const std::vector<VertexHandle> doomed = disk_vertices(mesh, plan.hub, 1.05 * plan.radius);
+    const std::vector<VertexHandle> doomed = vertices_near(mesh, plan.hub, 1.05 * plan.radius);
     if (!remove_vertices(mesh, doomed) || !insert_patch(mesh, plan, log_mesh, std::log(plan.radius) - kLogDepth)) {
       if (trace) std::fprintf(stderr, "hub patch: insertion failed, hub left as it was\n");
       mesh = std::move(backup);

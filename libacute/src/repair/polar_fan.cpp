@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_set>
 
 namespace acute::detail {
 
@@ -48,24 +47,6 @@ std::vector<FanSector> wall_sectors(const Mesh& mesh, VertexHandle vh) {
 }
 
 }  // namespace
-
-std::vector<VertexHandle> vertices_near(const Mesh& mesh, VertexHandle apex, double radius) {
-  const Point2 c = point2(mesh, apex);
-  std::vector<VertexHandle> out, frontier{apex};
-  std::unordered_set<int> seen{apex.idx()};
-  while (!frontier.empty()) {
-    const VertexHandle v = frontier.back();
-    frontier.pop_back();
-    for (auto w : mesh.vv_range(v)) {
-      if (seen.count(w.idx()) || (point2(mesh, w) - c).norm() >= radius) continue;
-      seen.insert(w.idx());
-      if (is_input(mesh, w)) continue;
-      out.push_back(w);
-      frontier.push_back(w);
-    }
-  }
-  return out;
-}
 
 std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector) {
   std::vector<SharpCorner> out;

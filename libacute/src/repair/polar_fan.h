@@ -27,9 +27,6 @@ struct SharpCorner {
 /// ring would be much finer than the mesh it meets.
 std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector);
 
-/// The non-Input vertices within `radius` of the apex (graph search from it, through vertices
-/// within the radius).
-std::vector<VertexHandle> vertices_near(const Mesh& mesh, VertexHandle apex, double radius);
 
 /// Rings of a fan. More reach closer to the apex but add vertices for nothing: the apex triangles
 /// may be as long as they like (their small angles are forced), and three is the fewest that keeps

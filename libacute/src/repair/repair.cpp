@@ -126,7 +126,7 @@ class Repairer {
   /// outweigh more bad triangles where the new part meets the old mesh: the repair smooths those
   /// out) or a better score. True when written back.
   bool rebuild_disk(VertexHandle apex_big, double radius, const char* what, const std::function<bool(Mesh&, VertexHandle)>& rebuild) {
-    std::vector<VertexHandle> near = detail::vertices_near(mesh_, apex_big, radius);
+    std::vector<VertexHandle> near = vertices_near(mesh_, apex_big, radius);
     detail::Region region;
     if (near.empty() || !detail::extract_region(mesh_, near, forced_, region)) return false;
     VertexHandle apex;

@@ -124,6 +124,10 @@ int mark_boundary_as_constrained(Mesh& mesh);
 /// so that callers repeating this keep one buffer instead of allocating one per call.
 std::vector<VertexHandle> with_rings(const Mesh& mesh, std::vector<VertexHandle> seeds, int rings, std::vector<char>& seen);
 
+/// The non-input vertices closer than `radius` to `centre`, reached from it through such vertices
+/// (a graph search: the movable vertices of a disk without a scan of the mesh).
+std::vector<VertexHandle> vertices_near(const Mesh& mesh, VertexHandle centre, double radius);
+
 /// mesh.garbage_collection() when an element is marked deleted (true then); a no-op otherwise.
 /// OpenMesh's collection rebuilds every array even when nothing is deleted (0.2 s per million
 /// triangles); the check is a scan of the status flags.
