@@ -27,7 +27,6 @@ struct SharpCorner {
 /// ring would be much finer than the mesh it meets.
 std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector);
 
-
 /// Rings of a fan. More reach closer to the apex but add vertices for nothing: the apex triangles
 /// may be as long as they like (their small angles are forced), and three is the fewest that keeps
 /// a whole lattice ring between the apex triangles' chords and the old mesh.

@@ -97,9 +97,9 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
     if (p == best_p || can_relocate(mesh, vh, p) != OpVerdict::Ok) return false;
     set_point2(mesh, vh, p);
     const double m = star_energy(mesh, vh, bounds, forced);
-    const bool stays_good = !keep_good || !(m < best * (1 - 1e-12)) || star_margin(mesh, vh, bounds, forced) >= 0;
+    const bool better = m < best * (1 - 1e-12) && (!keep_good || star_margin(mesh, vh, bounds, forced) >= 0);
     set_point2(mesh, vh, best_p);
-    if (m < best * (1 - 1e-12) && stays_good) {
+    if (better) {
       best = m;
       best_p = p;
       set_point2(mesh, vh, p);

@@ -195,10 +195,7 @@ class Repairer {
     return std::find(done.begin(), done.end(), point2(mesh_, vh)) != done.end();
   }
 
-  bool forced(VertexHandle vh) const {
-    const auto i = static_cast<std::size_t>(vh.idx());
-    return i < forced_.size() && forced_[i];
-  }
+  bool forced(VertexHandle vh) const { return is_forced(forced_, vh); }
 
   void restore_around(VertexHandle vh) {
     queue_.clear();
@@ -336,7 +333,8 @@ class Repairer {
   /// Sectors around vh (between constrained or boundary edges; the whole star when none) whose
   /// angle phi split among k triangles cannot meet the bounds: phi / k >= max, or phi / k < min for a
   /// sector not narrower than min at a vertex not `exempt` (at a forced corner's vertex every
-  /// triangle is exempt from the min bound: a log-polar hub fans its wide sectors finely). Frozen border vertices of a region copy are skipped by the caller.
+  /// triangle is exempt from the min bound: a log-polar hub fans its wide sectors finely). Frozen
+  /// border vertices of a region copy are skipped by the caller.
   std::size_t infeasible_sectors(const Mesh& sub, VertexHandle vh, bool exempt) const {
     HalfedgeHandle start;
     for (auto heh : sub.voh_range(vh))
@@ -368,10 +366,8 @@ class Repairer {
   }
 
   static bool face_is_exempt(const Mesh& mesh, FaceHandle fh, const std::vector<bool>& forced) {
-    for (auto vh : mesh.fv_range(fh)) {
-      const auto i = static_cast<std::size_t>(vh.idx());
-      if (i < forced.size() && forced[i]) return true;
-    }
+    for (auto vh : mesh.fv_range(fh))
+      if (is_forced(forced, vh)) return true;
     return false;
   }
 
