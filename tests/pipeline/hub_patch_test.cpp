@@ -78,7 +78,7 @@ std::vector<HubCase> hub_cases() {
 TEST(HubPatch, the_patched_start_is_valid_conforming_and_acute_around_the_hub) {
   for (const HubCase& c : hub_cases()) {
     SCOPED_TRACE(c.name);
-    Mesh mesh = test::cvt_mesh(c.domain, 2000);
+    Mesh mesh = test::cvt_mesh(c.domain, 800);
     const double area = test::total_area(mesh);
     MeshOptions options;
     const std::vector<Point2> hubs = detail::patch_strip_hubs(mesh, options, 0);
