@@ -332,6 +332,36 @@ TEST(Cvt, graded_domain_keeps_constraints_and_is_deterministic) {
   EXPECT_TRUE(same) << d.name;
 }
 
+TEST(Cvt, a_size_cap_makes_its_region_finer_and_leaves_the_rest) {
+  // The graded field of the unit square is uniform at hmax = 0.1; a cap of 0.04 on the left half.
+  const Domain d = test::unit_square();
+  CvtParams params;
+  params.hmax = 0.1;
+  params.lbfgs_iterations = 30;
+  const CvtResult plain = cvt_mesh(d, params);
+  params.size_cap = [](const Point2& p) { return p.x() < 0.5 ? 0.04 : 0.0; };  // 0: no cap there
+  const CvtResult capped = cvt_mesh(d, params);
+  EXPECT_EQ(test::verify_valid(capped.mesh), "");
+  expect_constraints_kept(capped.mesh, d);
+  EXPECT_NEAR(capped.size_field(Point2(0.2, 0.5)), 0.04, 1e-12);
+  EXPECT_NEAR(capped.size_field(Point2(0.9, 0.5)), plain.size_field(Point2(0.9, 0.5)), 1e-12);
+  auto median_edge = [](const Mesh& m, double x0, double x1) {
+    std::vector<double> lengths;
+    for (auto eh : m.edges()) {
+      const auto h = m.halfedge_handle(eh, 0);
+      const Point2 a = point2(m, m.from_vertex_handle(h)), b = point2(m, m.to_vertex_handle(h));
+      const double x = 0.5 * (a.x() + b.x());
+      if (x > x0 && x < x1) lengths.push_back((a - b).norm());
+    }
+    std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
+    return lengths[lengths.size() / 2];
+  };
+  EXPECT_LT(median_edge(capped.mesh, 0.05, 0.35), 0.055);
+  EXPECT_GT(median_edge(capped.mesh, 0.05, 0.35), 0.03);
+  EXPECT_NEAR(median_edge(capped.mesh, 0.85, 0.95) / median_edge(plain.mesh, 0.85, 0.95), 1.0, 0.2);
+  EXPECT_GT(capped.mesh.n_vertices(), 2 * plain.mesh.n_vertices());
+}
+
 TEST(Cvt, active_set_optimises_only_what_moves_and_meets_the_same_tolerance) {
   for (const Domain& d : {test::unit_square(), test::l_shape(), test::wedge_with_hole()}) {
     auto whole = prepare(d, 8000), part = prepare(d, 8000);

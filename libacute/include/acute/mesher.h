@@ -41,6 +41,8 @@ struct MeshOptions {
   double gradation = 1.3;
   /// > 0: the graded field's largest edge length (default: kDefaultMaxSizeRatio * the diameter)
   double max_size = 0;
+  /// When set: a position-dependent largest edge length for the graded field (CvtParams::size_cap)
+  std::function<double(const Point2&)> size_cap;
   unsigned seed = 1;
   /// With Method::Cvt: optimise as the acute method's start (a short optimisation, room for
   /// interior vertices in strips between input points), not to convergence: for callers that run

@@ -409,6 +409,15 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   }
   bool size_field_abandoned = false;
   out.size_field = make_size_field(cdt, sp, &size_field_abandoned);
+  if (params.size_cap && !out.size_field.is_uniform()) {
+    std::vector<double> values = out.size_field.background_values();
+    const auto& points = out.size_field.background_points();
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const double cap = params.size_cap(points[i]);
+      if (cap > 0 && std::isfinite(cap)) values[i] = std::min(values[i], cap);
+    }
+    out.size_field = out.size_field.with_values(std::move(values));
+  }
   if (size_field_abandoned || (params.time_limit_s > 0 && elapsed() > params.time_limit_s)) {
     out.out_of_time = out.abandoned = true;
     return out;

@@ -8,6 +8,8 @@
 #include "cvt/narrow_sectors.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -621,6 +623,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
     SizeField ft = field_at(top);
     if (past_abandon_time(params, start)) return given_up(hn, abandoned);
     const double at_top = predicted_vertex_count(input_cdt, ft);
+    if (std::getenv("ACUTE_TRACE")) std::fprintf(stderr, "size field: lfs-bound count %.0f, target %.0f\n", at_top, target);
     if (at_top >= target) {
       // The features alone need more than N: keep h <= lfs (the count exceeds the target) unless
       // that is over kMaxExcess * N; then coarsen the lfs-bound sizes by a common factor lambda

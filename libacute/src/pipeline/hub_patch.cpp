@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 /// The patch's inner radius (the hub's apex triangles) is its outer radius over e^kLogDepth.
-constexpr double kLogDepth = 1.1;
+constexpr double kLogDepth = 0.6;
 /// The log-polar mesh reaches this much further out; its points there are dropped: its outer
 /// corners (where the walls meet its outer side at right angles) are then no constraint.
 constexpr double kLogOverhang = 0.3;
@@ -267,7 +267,12 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
     lo.min_angle_deg = options.min_angle_deg + 2;
     lo.max_angle_deg = options.max_angle_deg - 3;
     lo.gradation = options.gradation;
-    lo.max_size = std::clamp(spacing / plan.radius, 2 * plan.narrowest, kMaxLogSize);
+    // The physical size r h(x) at most the mesh's spacing around the disk: h <= (spacing / R) e^(kLogDepth - x),
+    // so the patch grades toward the hub only where its strips need it (a uniform spacing / R tripled
+    // the vertices of la's disks). Never below twice the narrowest strip, never above kMaxLogSize.
+    const double outer_size = spacing / plan.radius, floor_size = std::min(2 * plan.narrowest, kMaxLogSize);
+    lo.max_size = kMaxLogSize;
+    lo.size_cap = [outer_size, floor_size](const Point2& q) { return std::clamp(outer_size * std::exp(kLogDepth - q.x()), floor_size, kMaxLogSize); };
     const double share = seconds > 0 ? seconds / static_cast<double>(plans.size()) : 0;
     Mesh log_mesh;
     if (!mesh_log_domain(log_domain, lo, options.seed, share, log_mesh)) {
@@ -275,8 +280,8 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
       continue;
     }
     if (trace) {
-      std::fprintf(stderr, "hub patch (%.6g, %.6g): radius %.4g, spacing %.4g, log size %.4g, %zu log vertices; sectors (degrees)", point2(mesh, plan.hub).x(),
-                   point2(mesh, plan.hub).y(), plan.radius, spacing, lo.max_size, log_mesh.n_vertices());
+      std::fprintf(stderr, "hub patch (%.6g, %.6g): radius %.4g, spacing %.4g, log size %.4g at its outer side, %zu log vertices; sectors (degrees)", point2(mesh, plan.hub).x(),
+                   point2(mesh, plan.hub).y(), plan.radius, spacing, std::clamp(outer_size, floor_size, kMaxLogSize), log_mesh.n_vertices());
       for (std::size_t i = 0; i + 1 < lines.size(); ++i) std::fprintf(stderr, " %.3g", (lines[i + 1] - lines[i]) * 180 / kPi);
       std::fprintf(stderr, "\n");
     }

@@ -122,6 +122,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       cp.graded = options.size <= 0;
       cp.gradation = options.gradation;
       cp.hmax = options.max_size;
+      cp.size_cap = options.size_cap;
       cp.seed = options.seed;
       // Share a time limit between the CVT (at most half) and the repair (the rest).
       if (options.time_limit_s > 0) cp.time_limit_s = std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);

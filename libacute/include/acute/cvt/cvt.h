@@ -81,6 +81,9 @@ struct CvtParams {
   double gradation = 1.3;          ///< graded default field
   double lfs_factor = 1.0;
   double hmax = 0;                 ///< 0: diameter / 25
+  /// When set: the graded field is at most size_cap(p) (taken at its background points; values
+  /// <= 0 or not finite are no cap). No effect on a uniform field (--size, or graded = false).
+  std::function<double(const Point2&)> size_cap;
   int lloyd_iterations = 10;
   int lbfgs_iterations = 200;
   double move_tolerance = 1e-3;     ///< rms |v - c_v| / h(v) to stop at
