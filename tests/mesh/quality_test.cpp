@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace acute {
 namespace {
@@ -195,6 +197,31 @@ TEST(ForcedCorners, open_segments_enclose_nothing) {
   d.points = {{0, 0}, {10, 1}, {10, -1}};
   d.segments = {{0, 1}, {0, 2}};
   EXPECT_EQ(forced_corners(d, 30).size(), 0u);
+}
+
+TEST(UnsatisfiableSectors, none_at_the_default_bounds_and_a_narrow_corner_against_a_low_max) {
+  const Wedge w;  // corners of 20, 80 and 80 degrees
+  EXPECT_TRUE(unsatisfiable_sectors(w.domain, 30, 90).empty());
+  EXPECT_TRUE(unsatisfiable_sectors(w.domain, 30, 85).empty()) << "20 > 180 - 2 * 85";
+  // Max 79: the 20-degree corner's triangle keeps 160 degrees for two angles below 79; the
+  // 80-degree corners are cut in two.
+  const auto f = unsatisfiable_sectors(w.domain, 30, 79);
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].point, 0);
+  EXPECT_NEAR(f[0].angle_deg, 20, 1e-9);
+  EXPECT_EQ(unsatisfiable_sectors(w.domain, 30, 80).size(), 1u) << "base angles of exactly 80 are not below 80";
+  EXPECT_EQ(unsatisfiable_sectors(w.domain, 30, 80.001).size(), 0u);
+}
+
+TEST(UnsatisfiableSectors, close_bounds_leave_sectors_no_count_of_corners_fits) {
+  // Bounds [50, 65): a triangle corner in (50, 65); 90 and 80 degrees are neither one corner nor
+  // two; 340 and 280 are six and five; 20 is below 50 and not above 180 - 130.
+  const auto f = unsatisfiable_sectors(square_with_wedge_loop(false), 50, 65);
+  std::vector<int> points;
+  for (const auto& c : f) points.push_back(c.point);
+  std::sort(points.begin(), points.end());
+  EXPECT_EQ(points, (std::vector<int>{0, 1, 2, 3, 4, 5, 6}));
+  EXPECT_TRUE(unsatisfiable_sectors(square_with_wedge_loop(true), 30, 90).empty());
 }
 
 TEST(ForcedCorners, repeated_points_and_split_segments) {

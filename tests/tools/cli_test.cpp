@@ -230,6 +230,23 @@ TEST(Pictures, MissingFolderFailsBeforeTheRun) {
   EXPECT_FALSE(fs::exists(out("A_nofolder.off")));
 }
 
+TEST(Bounds, AnInputCornerNoMeshCanMeetIsNamedAndTheBestMeshIsStillWritten) {
+  // An 8-degree corner: its triangle's other two angles sum to 172, so one is at least 86.
+  const std::string poly = out("wedge8.poly");
+  const double c = std::cos(8 * M_PI / 180), s = std::sin(8 * M_PI / 180);
+  std::ofstream(poly) << "3 2 0 0\n1 0 0\n2 10 0\n3 " << 10 * c << " " << 10 * s << "\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n";
+  const CliRun r = acute("mesh " + quoted(poly) + " -o " + quoted(out("wedge8.off")) + " --vertices 200 --min-angle 35 --max-angle 85 --time-limit 2",
+                         "wedge8");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("unsatisfiable bounds at 1 input corner(s)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the 8-degree sector at (0, 0) leaves its triangle an angle of at least 86 degrees"), std::string::npos) << r.err;
+  EXPECT_GT(n_triangles(out("wedge8.off")), 0u);
+  // The default bounds hold there (the corner's 8 degrees are forced, its other angles 86).
+  const CliRun ok = acute("mesh " + quoted(poly) + " -o " + quoted(out("wedge8_ok.off")) + " --vertices 200", "wedge8_ok");
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_EQ(ok.err.find("unsatisfiable"), std::string::npos) << ok.err;
+}
+
 TEST(Progress, NeverInStderrThatIsNotATerminal) {
   CliRun r = acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_p1.off")) + " --vertices 800", "p_mesh");
   ASSERT_LE(r.code, 1) << r.err;

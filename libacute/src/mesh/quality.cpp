@@ -349,6 +349,26 @@ std::array<double, 3> triangle_angles_deg(const Point2& a, const Point2& b, cons
           std::atan2(cr, vx * wx + vy * wy) * kDeg};
 }
 
+std::vector<ForcedCorner> unsatisfiable_sectors(const Domain& domain, double min_angle_deg, double max_angle_deg) {
+  // Corners a triangle can have with its other two angles in [min, max): (180 - 2 max, 180 - 2 min].
+  const double corner_lo = 180.0 - 2.0 * max_angle_deg, corner_hi = 180.0 - 2.0 * min_angle_deg;
+  // Corners of a split sector are in [min, max) too.
+  const double lo = std::max(min_angle_deg, corner_lo), hi = std::min(max_angle_deg, corner_hi);
+  auto satisfiable = [&](double theta) {
+    if (theta < min_angle_deg - kAngleTol) return theta > corner_lo + kAngleTol;
+    if (!(hi > lo)) return false;
+    if (lo <= kAngleTol) return true;  // corners as small as needed
+    // k corners cover [k lo, k hi] (hi and a lo of 180 - 2 max are open: a hair inside them)
+    for (double k = std::max(1.0, std::floor(theta / hi)); k <= std::ceil(theta / lo) + 1; ++k)
+      if (theta >= k * lo - kAngleTol && theta <= k * hi + kAngleTol) return true;
+    return false;
+  };
+  std::vector<ForcedCorner> out;
+  for (const ForcedCorner& sector : forced_corners(domain, 361.0))
+    if (!satisfiable(sector.angle_deg)) out.push_back(sector);
+  return out;
+}
+
 std::vector<ForcedCorner> forced_corners(const Domain& domain, double min_angle_deg, const Mesh& mesh) {
   const Pslg g(domain);
   return forced_corners_mesh_based(g, min_angle_deg, mesh, used_vertices_by_position(mesh));

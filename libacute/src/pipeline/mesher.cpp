@@ -3,6 +3,7 @@
 #include <acute/core/errors.h>
 #include <acute/cvt/cvt.h>
 #include <acute/mesh/geometry.h>
+#include <acute/mesh/quality.h>
 #include <acute/mesh/segments.h>
 #include <acute/refine/refine.h>
 #include <acute/repair/repair.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace acute {
@@ -85,6 +87,23 @@ double target_edge(const MeshOptions& o, double area) {
   if (o.size > 0) return o.size;
   if (o.target_vertices > 0) return std::sqrt(2.0 * area / (std::sqrt(3.0) * static_cast<double>(o.target_vertices)));
   return 0;
+}
+
+/// A note naming the input sectors where the bounds cannot hold (the repair then keeps the best mesh
+/// it finds and reports the rest), or "" when there is none.
+std::string unsatisfiable_note(const Domain& domain, const MeshOptions& o) {
+  const std::vector<ForcedCorner> sectors = unsatisfiable_sectors(domain, o.min_angle_deg, o.max_angle_deg);
+  if (sectors.empty()) return "";
+  const ForcedCorner& s = sectors.front();
+  const Point2& p = domain.points[static_cast<std::size_t>(s.point)];
+  char what[256];
+  if (s.angle_deg < o.min_angle_deg)
+    std::snprintf(what, sizeof what, "the %.4g-degree sector at (%.9g, %.9g) leaves its triangle an angle of at least %.4g degrees, not below the max %.4g",
+                  s.angle_deg, p.x() + 0.0, p.y() + 0.0, 90.0 - 0.5 * s.angle_deg, o.max_angle_deg);
+  else
+    std::snprintf(what, sizeof what, "the %.4g-degree sector at (%.9g, %.9g) cannot be cut into triangle corners within [%.4g, %.4g)", s.angle_deg,
+                  p.x() + 0.0, p.y() + 0.0, o.min_angle_deg, o.max_angle_deg);
+  return "unsatisfiable bounds at " + std::to_string(sectors.size()) + " input corner(s) of this domain, e.g. " + what;
 }
 
 }  // namespace
@@ -171,6 +190,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
         refine_start(0.5 * options.time_limit_s - seconds_since(start));
       }
       if (options.method == Method::Cvt) break;
+      if (const std::string note = unsatisfiable_note(domain, options); !note.empty()) result.notes.push_back(note);
       // Strip hubs: the start's disk around each graded in log-polar coordinates (with a time limit,
       // within 30% of the time left: without a patch such a hub seldom meets the bounds at all).
       const double patch_seconds = options.time_limit_s > 0 ? std::max(0.3 * (options.time_limit_s - seconds_since(start)), 1e-9) : 0;

@@ -71,4 +71,13 @@ std::vector<ForcedCorner> forced_corners(const Domain& domain, double min_angle_
 /// no forced corner, and Steiner points rounded off a slanted segment can hide a corner).
 std::vector<ForcedCorner> forced_corners(const Domain& domain, double min_angle_deg, const Mesh& mesh);
 
+/// Input sectors (as forced_corners models them) where no mesh can meet the bounds, sorted by
+/// angle. A triangle's corner a in the sector leaves 180 - a for its other two angles, so only
+/// a in (180 - 2 max, 180 - 2 min] can keep them in [min, max). A sector below min is one such
+/// corner (its own small angle is allowed): unsatisfiable when it is at most 180 - 2 max (with
+/// max 85, any sector under 10 degrees). A wider sector is cut into corners that are also in
+/// [min, max): unsatisfiable when no number k of corners from that interval sums to it (only
+/// with bounds close together, e.g. 50 and 65 against a 70-degree sector).
+std::vector<ForcedCorner> unsatisfiable_sectors(const Domain& domain, double min_angle_deg, double max_angle_deg);
+
 }  // namespace acute
