@@ -110,6 +110,10 @@ TEST(HubPatch, the_pipeline_meets_the_bounds_at_strip_hubs) {
     EXPECT_EQ(test::verify_valid(r.mesh), "");
     EXPECT_EQ(test::verify_conforms(r.mesh, c.domain, mesh_area(build_domain_cdt(c.domain))), "");
     EXPECT_EQ(bad_within(r.mesh, 1e9), 0);
+    // The result counts both starts: the CVT's and the patched one the repair began from.
+    EXPECT_GT(r.cvt_vertices, 0u);
+    EXPECT_NE(r.cvt_vertices, r.start_vertices);
+    EXPECT_LE(r.start_vertices, r.mesh.n_vertices() + r.mesh.n_vertices() / 10);
   }
 }
 

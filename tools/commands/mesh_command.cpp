@@ -118,6 +118,7 @@ int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
   j["n_right"] = q.n_right;
   j["n_below_min"] = q.n_below_min;
   j["merged_duplicates"] = result.cdt.merged_duplicates;
+  if (result.cvt_vertices > 0) j["n_vertices_cvt"] = result.cvt_vertices;
   if (result.start_vertices > 0) j["n_vertices_start"] = result.start_vertices;
   if (dual_check)
     j["dual"] = {{"well_centered", dual_check->well_centered()}, {"n_right", dual_check->n_right}, {"n_obtuse", dual_check->n_obtuse}};

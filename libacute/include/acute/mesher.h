@@ -70,7 +70,8 @@ struct MeshResult {
   Mesh mesh;
   MeshStatus status = MeshStatus::NotApplicable;
   int iterations = 0;
-  std::size_t start_vertices = 0;      ///< vertices of the start mesh (e.g. the CVT) the repair began from
+  std::size_t cvt_vertices = 0;        ///< vertices of the start mesh (the CVT, or a refinement) before the hub patches
+  std::size_t start_vertices = 0;      ///< vertices the repair began from: the start with its hub patches
   std::vector<BadTriangle> remaining;  ///< bad triangles left (first 100)
   CdtStats cdt;
   std::vector<std::string> notes;      ///< warnings and remarks for the user

@@ -193,6 +193,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       if (const std::string note = unsatisfiable_note(domain, options); !note.empty()) result.notes.push_back(note);
       // Strip hubs: the start's disk around each graded in log-polar coordinates (with a time limit,
       // within 30% of the time left: without a patch such a hub seldom meets the bounds at all).
+      result.cvt_vertices = result.mesh.n_vertices();
       const double patch_seconds = options.time_limit_s > 0 ? std::max(0.3 * (options.time_limit_s - seconds_since(start)), 1e-9) : 0;
       const std::vector<Point2> patched_hubs = detail::patch_strip_hubs(result.mesh, options, patch_seconds);
       result.start_vertices = result.mesh.n_vertices();
