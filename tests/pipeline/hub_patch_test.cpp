@@ -66,7 +66,7 @@ int bad_within(const Mesh& mesh, double radius, double seam_deg = 1000) {
 struct HubCase {
   const char* name;
   Domain domain;
-  double inside;  ///< a radius well inside the patch (the patch's own: 0.28 and 2.7)
+  double inside;  ///< a radius well inside the patch (the patch's own: 0.28 and 3.6)
   double seam_deg = 1000;  ///< a full fan's cut: the middle of its widest sector
 };
 
