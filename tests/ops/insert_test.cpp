@@ -40,6 +40,33 @@ TEST(InsertPoint, on_constrained_boundary_edge_creates_on_segment_vertex) {
   EXPECT_MESH_VALID(mesh);
 }
 
+TEST(InsertPoint, from_a_vertex_tries_its_faces_until_a_walk_is_not_blocked) {
+  // A 2 x 2 grid with the line x = 1 constrained: from (1, 1) a walk towards (1.5, 0.5) that starts
+  // left of the line is blocked by it, one that starts right of it is not; from (0, 2) every
+  // walk is blocked.
+  Mesh mesh = test::grid_mesh(2);
+  for (auto eh : mesh.edges()) {
+    const auto h = mesh.halfedge_handle(eh, 0);
+    if (point2(mesh, mesh.from_vertex_handle(h)).x() == 1 && point2(mesh, mesh.to_vertex_handle(h)).x() == 1) mesh.data(eh).segment = 4;
+  }
+  VertexHandle centre, corner;
+  for (auto vh : mesh.vertices()) {
+    if (point2(mesh, vh) == Point2(1, 1)) centre = vh;
+    if (point2(mesh, vh) == Point2(0, 2)) corner = vh;
+  }
+  const Point2 q(1.5, 0.5);
+  int blocked = 0;
+  for (auto fh : mesh.vf_range(centre)) blocked += locate(mesh, q, fh).kind == LocationKind::Blocked;
+  ASSERT_GT(blocked, 0);
+  EXPECT_FALSE(insert_point_from(mesh, q, corner).is_valid());
+  EXPECT_EQ(mesh.n_vertices(), 9u);
+  const VertexHandle vh = insert_point_from(mesh, q, centre);
+  ASSERT_TRUE(vh.is_valid());
+  EXPECT_EQ(point2(mesh, vh), q);
+  EXPECT_MESH_VALID(mesh);
+  EXPECT_NEAR(test::total_area(mesh), 4.0, 1e-12);
+}
+
 TEST(SplitEdge, midpoint_of_interior_and_boundary_edges) {
   Mesh mesh = test::grid_mesh(2);
   std::vector<EdgeHandle> edges(mesh.edges().begin(), mesh.edges().end());

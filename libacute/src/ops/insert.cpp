@@ -114,6 +114,14 @@ VertexHandle restore_around(Mesh& mesh, VertexHandle vh) {
 
 }  // namespace
 
+VertexHandle insert_point_from(Mesh& mesh, const Point2& p, VertexHandle from) {
+  for (auto fh : mesh.vf_range(from)) {
+    const VertexHandle vh = insert_point(mesh, p, fh);
+    if (vh.is_valid()) return vh;  // (the mesh changed: the circulator is not used again)
+  }
+  return VertexHandle();
+}
+
 VertexHandle insert_point(Mesh& mesh, const Point2& p, FaceHandle start, EdgeHandle* blocked_edge) {
   const Location loc = locate(mesh, p, start);
   switch (loc.kind) {

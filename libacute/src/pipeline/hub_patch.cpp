@@ -162,19 +162,12 @@ bool insert_patch(Mesh& mesh, const HubPlan& plan, const Mesh& log_mesh, double 
   std::sort(free_points.begin(), free_points.end());
   const double phi0 = std::atan2(plan.walls[0].u.y(), plan.walls[0].u.x());
   VertexHandle last;
-  auto insert_from = [&](const Point2& q, VertexHandle from) {
-    for (auto fh : mesh.vf_range(from)) {
-      const VertexHandle vh = insert_point(mesh, q, fh);
-      if (vh.is_valid()) {
-        last = vh;
-        return true;
-      }
-    }
-    return false;
-  };
   for (const auto& [phi, s] : free_points) {
     const Point2 q = c + std::exp(s) * Point2(std::cos(phi0 + phi), std::sin(phi0 + phi));
-    if (!((last.is_valid() && insert_from(q, last)) || insert_from(q, plan.hub))) return false;
+    VertexHandle vh = last.is_valid() ? insert_point_from(mesh, q, last) : VertexHandle();
+    if (!vh.is_valid()) vh = insert_point_from(mesh, q, plan.hub);
+    if (!vh.is_valid()) return false;
+    last = vh;
   }
   return true;  // (every insertion and split restores the Delaunay property around it)
 }

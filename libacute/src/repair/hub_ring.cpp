@@ -167,12 +167,8 @@ bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below) {
     // crosses a wall, so it must start on the sector's side).
     VertexHandle last = apex;
     for (const Point2& q : plan.ring) {
-      VertexHandle vh;
-      for (VertexHandle from : {last, apex}) {
-        for (auto fh : sub.vf_range(from))
-          if (!vh.is_valid()) vh = insert_point(sub, q, fh);
-        if (vh.is_valid()) break;
-      }
+      VertexHandle vh = insert_point_from(sub, q, last);
+      if (!vh.is_valid()) vh = insert_point_from(sub, q, apex);
       if (!vh.is_valid() || sub.data(vh).kind != VertexKind::Free) return false;
       last = vh;
     }

@@ -80,14 +80,10 @@ bool scatter_interior(Mesh& sub, double h, std::mt19937& rng) {
     }
   }
   bool changed = false;
-  for (const auto& d : darts)
-    for (auto fh : sub.vf_range(d.corner)) {
-      const VertexHandle vh = insert_point(sub, d.p, fh);
-      if (vh.is_valid()) {
-        changed = changed || !is_input(sub, vh);
-        break;
-      }
-    }
+  for (const auto& d : darts) {
+    const VertexHandle vh = insert_point_from(sub, d.p, d.corner);
+    if (vh.is_valid()) changed = changed || !is_input(sub, vh);
+  }
   return changed;
 }
 
@@ -259,8 +255,7 @@ bool rebuild_sectors(Mesh& sub, VertexHandle apex, const std::vector<Sector>& se
     const double half = 0.5 * sector.angle;
     for (std::size_t k = 0; k + 1 < radius.size(); ++k) {
       const Point2 q = c + (0.5 * (radius[k] + radius[k + 1]) * std::cos(half)) * bisector;
-      for (auto fh : sub.vf_range(apex))
-        if (insert_point(sub, q, fh).is_valid()) break;
+      insert_point_from(sub, q, apex);
     }
   }
   make_delaunay(sub);

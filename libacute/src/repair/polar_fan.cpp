@@ -169,18 +169,11 @@ bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings) {
   // gap), then from the apex: walking from the apex every time crossed the whole fan, quadratic in
   // its points where a wide sector beside a very narrow one gets thousands.
   VertexHandle last;
-  auto insert_from = [&](const Point2& q, VertexHandle from) {
-    for (auto fh : sub.vf_range(from)) {
-      const VertexHandle vh = insert_point(sub, q, fh);
-      if (vh.is_valid()) {
-        last = vh;
-        return true;
-      }
-    }
-    return false;
-  };
   auto insert = [&](const Point2& q) {
-    return (last.is_valid() && !sub.status(last).deleted() && insert_from(q, last)) || insert_from(q, apex);
+    VertexHandle vh = last.is_valid() && !sub.status(last).deleted() ? insert_point_from(sub, q, last) : VertexHandle();
+    if (!vh.is_valid()) vh = insert_point_from(sub, q, apex);
+    if (vh.is_valid()) last = vh;
+    return vh.is_valid();
   };
   for (const FanSector& s : sectors) {
     const Point2 u0 = s.u0;

@@ -33,6 +33,11 @@ Location locate(const Mesh& mesh, const Point2& p, FaceHandle start);
 /// boundary edge (a frozen border, e.g. of a region copy), which is never split.
 VertexHandle insert_point(Mesh& mesh, const Point2& p, FaceHandle start, EdgeHandle* blocked_edge = nullptr);
 
+/// insert_point walking from each face at `from` in turn until a walk is not blocked (a walk never
+/// crosses a constrained edge, so at a vertex on segments the face it starts from matters). Points
+/// inserted one after another near each other are located in O(1) from the one before.
+VertexHandle insert_point_from(Mesh& mesh, const Point2& p, VertexHandle from);
+
 /// Splits edge eh at p (which should lie on it, e.g. a midpoint rounded to doubles) and restores
 /// the Delaunay property. Constrained edges: the new vertex is OnSegment and p is projected on the
 /// input segment line when a segment table is present. \pre p strictly inside the edge's diamond so
