@@ -111,7 +111,7 @@ TEST(BuildPolarFan, every_wall_vertex_gets_three_triangles_per_sector_and_the_me
     Mesh sub = region.sub;
     const VertexHandle apex = vertex_at(sub, Point2(0, 0));
     ASSERT_TRUE(apex.is_valid());
-    ASSERT_TRUE(detail::build_polar_fan(sub, apex, corner->radius, detail::kPolarFanRings));
+    ASSERT_TRUE(detail::build_polar_fan(sub, apex, corner->radius, detail::kPolarFanRings, kPi / 2));
     // Inside the fan (its outer ring meets the old mesh): no vertex on a segment with two triangles on a side (90 + 90 degrees), no
     // interior vertex with four or fewer (an angle of 90 or more).
     for (auto vh : sub.vertices()) {
@@ -124,6 +124,33 @@ TEST(BuildPolarFan, every_wall_vertex_gets_three_triangles_per_sector_and_the_me
     }
     test::expect_commit_keeps_the_mesh(mesh, region, sub, area);
   }
+}
+
+TEST(BuildPolarFan, apex_triangles_keep_their_base_angles_below_a_max_bound_under_90) {
+  // 50 degrees divided into 11 and 39: the nearest multiple of 11 would cut the 39 into four gaps of
+  // 9.75 degrees, apex triangles with base angles of 85.1; at max 85 the sector gets three gaps.
+  Mesh mesh = cvt_mesh(divided_corner(11), 1500);
+  const double max_angle = 85 * kPi / 180;
+  const detail::SharpCorner* corner = nullptr;
+  const auto corners = detail::find_sharp_corners(mesh, 35 * kPi / 180);
+  for (const auto& c : corners)
+    if (point2(mesh, c.apex) == Point2(0, 0)) corner = &c;
+  ASSERT_NE(corner, nullptr);
+  detail::Region region;
+  ASSERT_TRUE(detail::extract_region(mesh, vertices_near(mesh, corner->apex, 1.5 * corner->radius), forced_corner_vertices(mesh, 35), region));
+  Mesh sub = region.sub;
+  const VertexHandle apex = vertex_at(sub, Point2(0, 0));
+  ASSERT_TRUE(apex.is_valid());
+  ASSERT_TRUE(detail::build_polar_fan(sub, apex, corner->radius, detail::kPolarFanRings, max_angle));
+  EXPECT_MESH_VALID(sub);
+  std::size_t apex_triangles = 0;
+  for (auto fh : sub.vf_range(apex)) {
+    const auto p = face_points(sub, fh);
+    const auto a = angles_deg(p[0], p[1], p[2]);
+    EXPECT_LT(*std::max_element(a.begin(), a.end()), 85.0);
+    ++apex_triangles;
+  }
+  EXPECT_EQ(apex_triangles, 4u);  // 11 | 13, 13, 13
 }
 
 TEST(RepairAcute, sharp_sectors_beside_interior_segments_meet_the_bounds_with_few_extra_vertices) {

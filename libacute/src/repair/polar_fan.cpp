@@ -122,7 +122,7 @@ std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector)
   return out;
 }
 
-bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings) {
+bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, double max_angle) {
   const std::vector<FanSector> sectors = wall_sectors(sub, apex);
   if (sectors.empty() || rings < 2) return false;
   double narrowest = INFINITY;
@@ -177,7 +177,12 @@ bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings) {
   };
   for (const FanSector& s : sectors) {
     const Point2 u0 = s.u0;
-    const int gaps = std::max(1, static_cast<int>(std::lround(s.angle / narrowest)));
+    // The apex triangles' base angles are (pi - gap) / 2: below the max bound only for gaps wider
+    // than pi - 2 max. Rounding gives gaps down to 3/4 of the narrowest sector (a sector of 16.5
+    // degrees beside one of 11: two of 8.25, base angles 85.9); fewer and wider ones where a max
+    // bound below 90 needs it (the narrowest sector's own apex triangle is forced).
+    int gaps = std::max(1, static_cast<int>(std::lround(s.angle / narrowest)));
+    while (gaps > 1 && s.angle / gaps <= kPi - 2 * max_angle) --gaps;
     const double step = 0.5 * s.angle / gaps;
     const double psi0 = std::atan2(u0.y(), u0.x());
     for (int j = 1; j < 2 * gaps; ++j) {

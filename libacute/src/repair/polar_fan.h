@@ -35,8 +35,9 @@ constexpr int kPolarFanRings = 3;
 /// Rebuilds the disk of `radius` around `apex` (an Input vertex of sub whose whole star sub holds,
 /// with a sector narrower than the min bound, so the apex triangles' small angles are forced) as a
 /// log-polar lattice of `rings` rings; each sector is divided into the nearest multiple of the
-/// narrowest. False when sub was left unchanged or the rebuild could not be completed (sub is then
-/// to be discarded).
-bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings);
+/// narrowest, or fewer parts where that would leave apex triangles with base angles of max_angle
+/// (radians) or more. False when sub was left unchanged or the rebuild could not be completed (sub
+/// is then to be discarded).
+bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, double max_angle);
 
 }  // namespace acute::detail

@@ -160,7 +160,7 @@ class Repairer {
       if (out_of_time()) break;
       if (mesh_.status(corner.apex).deleted() || graded_already(corner.apex)) continue;
       changed = rebuild_disk(corner.apex, 1.5 * corner.radius, "sharp corner", [&](Mesh& sub, VertexHandle apex) {
-                  return detail::build_polar_fan(sub, apex, corner.radius, detail::kPolarFanRings);
+                  return detail::build_polar_fan(sub, apex, corner.radius, detail::kPolarFanRings, bounds_.max_deg * kPi / 180);
                 }) || changed;
     }
     if (changed) {
