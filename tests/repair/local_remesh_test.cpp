@@ -148,7 +148,7 @@ TEST(RepairAcute, sharp_wedges_meet_the_bounds) {
     SCOPED_TRACE(apex_deg);
     MeshOptions options;
     options.target_vertices = 400;
-    options.time_limit_s = 60;
+    // No clock: the result must not depend on the machine (sanitizer builds are ~50x slower).
     const MeshResult result = generate_mesh(sharp_wedge(apex_deg), options);
     EXPECT_EQ(result.status, MeshStatus::Ok);
     EXPECT_MESH_VALID(result.mesh);

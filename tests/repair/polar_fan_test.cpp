@@ -159,7 +159,8 @@ TEST(RepairAcute, sharp_sectors_beside_interior_segments_meet_the_bounds_with_fe
       SCOPED_TRACE(testing::Message() << sharp_deg << " degrees, " << n << " vertices");
       MeshOptions options;
       options.target_vertices = n;
-      options.time_limit_s = 60;
+      // No clock: the result must not depend on the machine (a 60 s limit cut the 8-degree run
+      // at 3,000 vertices short under ASan on a slow CI machine); the iteration cap ends it.
       const MeshResult result = generate_mesh(divided_corner(sharp_deg), options);
       EXPECT_EQ(result.status, MeshStatus::Ok);
       EXPECT_MESH_VALID(result.mesh);
