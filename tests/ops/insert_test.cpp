@@ -67,6 +67,34 @@ TEST(InsertPoint, from_a_vertex_tries_its_faces_until_a_walk_is_not_blocked) {
   EXPECT_NEAR(test::total_area(mesh), 4.0, 1e-12);
 }
 
+TEST(InsertPoint, after_a_blocked_or_missing_previous_vertex_walks_from_the_anchor) {
+  // The same grid and line: points right of x = 1 inserted one after another, the first with no
+  // previous vertex, the second after one left of the line (every walk from it blocked), the third
+  // after the second.
+  Mesh mesh = test::grid_mesh(2);
+  for (auto eh : mesh.edges()) {
+    const auto h = mesh.halfedge_handle(eh, 0);
+    if (point2(mesh, mesh.from_vertex_handle(h)).x() == 1 && point2(mesh, mesh.to_vertex_handle(h)).x() == 1) mesh.data(eh).segment = 4;
+  }
+  VertexHandle centre, corner;
+  for (auto vh : mesh.vertices()) {
+    if (point2(mesh, vh) == Point2(1, 1)) centre = vh;
+    if (point2(mesh, vh) == Point2(0, 2)) corner = vh;
+  }
+  const VertexHandle a = insert_point_after(mesh, Point2(1.5, 0.5), VertexHandle(), centre);
+  ASSERT_TRUE(a.is_valid());
+  const VertexHandle b = insert_point_after(mesh, Point2(1.5, 1.5), corner, centre);
+  ASSERT_TRUE(b.is_valid());
+  const VertexHandle c = insert_point_after(mesh, Point2(1.75, 1.25), b, corner);
+  ASSERT_TRUE(c.is_valid());
+  EXPECT_EQ(point2(mesh, c), Point2(1.75, 1.25));
+  EXPECT_FALSE(insert_point_after(mesh, Point2(1.25, 0.25), corner, corner).is_valid());
+  EXPECT_EQ(mesh.n_vertices(), 12u);
+  EXPECT_MESH_VALID(mesh);
+  EXPECT_MESH_DELAUNAY(mesh);
+  EXPECT_NEAR(test::total_area(mesh), 4.0, 1e-12);
+}
+
 TEST(SplitEdge, midpoint_of_interior_and_boundary_edges) {
   Mesh mesh = test::grid_mesh(2);
   std::vector<EdgeHandle> edges(mesh.edges().begin(), mesh.edges().end());

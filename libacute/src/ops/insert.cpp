@@ -122,6 +122,14 @@ VertexHandle insert_point_from(Mesh& mesh, const Point2& p, VertexHandle from) {
   return VertexHandle();
 }
 
+VertexHandle insert_point_after(Mesh& mesh, const Point2& p, VertexHandle previous, VertexHandle anchor) {
+  if (previous.is_valid() && !mesh.status(previous).deleted()) {
+    const VertexHandle vh = insert_point_from(mesh, p, previous);
+    if (vh.is_valid()) return vh;
+  }
+  return insert_point_from(mesh, p, anchor);
+}
+
 VertexHandle insert_point(Mesh& mesh, const Point2& p, FaceHandle start, EdgeHandle* blocked_edge) {
   const Location loc = locate(mesh, p, start);
   switch (loc.kind) {

@@ -164,8 +164,7 @@ bool insert_patch(Mesh& mesh, const HubPlan& plan, const Mesh& log_mesh, double 
   VertexHandle last;
   for (const auto& [phi, s] : free_points) {
     const Point2 q = c + std::exp(s) * Point2(std::cos(phi0 + phi), std::sin(phi0 + phi));
-    VertexHandle vh = last.is_valid() ? insert_point_from(mesh, q, last) : VertexHandle();
-    if (!vh.is_valid()) vh = insert_point_from(mesh, q, plan.hub);
+    const VertexHandle vh = insert_point_after(mesh, q, last, plan.hub);
     if (!vh.is_valid()) return false;
     last = vh;
   }

@@ -167,8 +167,7 @@ bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below) {
     // crosses a wall, so it must start on the sector's side).
     VertexHandle last = apex;
     for (const Point2& q : plan.ring) {
-      VertexHandle vh = insert_point_from(sub, q, last);
-      if (!vh.is_valid()) vh = insert_point_from(sub, q, apex);
+      const VertexHandle vh = insert_point_after(sub, q, last, apex);
       if (!vh.is_valid() || sub.data(vh).kind != VertexKind::Free) return false;
       last = vh;
     }

@@ -170,8 +170,7 @@ bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, dou
   // its points where a wide sector beside a very narrow one gets thousands.
   VertexHandle last;
   auto insert = [&](const Point2& q) {
-    VertexHandle vh = last.is_valid() && !sub.status(last).deleted() ? insert_point_from(sub, q, last) : VertexHandle();
-    if (!vh.is_valid()) vh = insert_point_from(sub, q, apex);
+    const VertexHandle vh = insert_point_after(sub, q, last, apex);
     if (vh.is_valid()) last = vh;
     return vh.is_valid();
   };

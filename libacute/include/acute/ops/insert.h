@@ -38,6 +38,11 @@ VertexHandle insert_point(Mesh& mesh, const Point2& p, FaceHandle start, EdgeHan
 /// inserted one after another near each other are located in O(1) from the one before.
 VertexHandle insert_point_from(Mesh& mesh, const Point2& p, VertexHandle from);
 
+/// For a run of points inserted one after another: insert_point_from the vertex inserted before
+/// (`previous`, skipped when invalid or deleted), then from `anchor` (a vertex on the run's side of
+/// every wall, e.g. the apex of a fan) when that walk is blocked.
+VertexHandle insert_point_after(Mesh& mesh, const Point2& p, VertexHandle previous, VertexHandle anchor);
+
 /// Splits edge eh at p (which should lie on it, e.g. a midpoint rounded to doubles) and restores
 /// the Delaunay property. Constrained edges: the new vertex is OnSegment and p is projected on the
 /// input segment line when a segment table is present. \pre p strictly inside the edge's diamond so
