@@ -82,7 +82,7 @@ TEST(HubRing, strips_get_isosceles_apex_triangles_and_the_wide_sector_a_graded_r
     HubRegion h = hub_region(n);
     ASSERT_TRUE(h.apex.is_valid());
     Mesh sub = h.region.sub;
-    ASSERT_TRUE(detail::rebuild_hub_ring(sub, h.apex, kStrip));
+    ASSERT_TRUE(detail::rebuild_hub_ring(sub, h.apex, kStrip, kPi / 2));
     // Every triangle at the hub: no angle of 90 or more (the strips' apex triangles have base
     // angles of 87 and 87.5 degrees, the ring's are isosceles at least as wide).
     for (double a : max_angles_at(sub, h.apex)) EXPECT_LT(a, 90);
@@ -104,6 +104,28 @@ TEST(HubRing, strips_get_isosceles_apex_triangles_and_the_wide_sector_a_graded_r
     // Back in the big mesh: valid, conforming, the same area.
     test::expect_commit_keeps_the_mesh(h.mesh, h.region, sub, h.area);
   }
+}
+
+TEST(HubRing, no_planned_gap_narrower_than_a_max_bound_below_90_allows) {
+  // A 10.5-degree strip across one wall of a 41-degree sector (none across the other): 15.75 from
+  // the strip's wall, 25.2 next to it, 28.6 from the far wall, scaled into 41 degrees: 9.3, 14.9
+  // and 16.9. At max 90 that is the ring; at max 85 an apex gap of 9.3 leaves base angles of
+  // 85.4, so the last gap planned goes: 15.8 and 25.2.
+  const double deg = kPi / 180;
+  const std::vector<double> at_90 = detail::plan_ring_gaps(41 * deg, 10.5 * deg, 0, detail::apex_gap_floor(90 * deg));
+  ASSERT_EQ(at_90.size(), 3u);
+  EXPECT_NEAR(at_90[0] / deg, 15.75 * 41 / 69.55, 1e-2);
+  const std::vector<double> at_85 = detail::plan_ring_gaps(41 * deg, 10.5 * deg, 0, detail::apex_gap_floor(85 * deg));
+  ASSERT_EQ(at_85.size(), 2u);
+  for (double g : at_85) EXPECT_GE(g, 10.5 * deg);
+  double sum = 0;
+  for (double g : at_85) sum += g;
+  EXPECT_NEAR(sum, 41 * deg, 1e-12);
+  // The floor: 180 - 2 max with a 5% margin; nothing at 90.
+  EXPECT_NEAR(detail::apex_gap_floor(85 * deg) / deg, 10.5, 1e-9);
+  EXPECT_EQ(detail::apex_gap_floor(kPi / 2), 0);
+  // At max 80 the floor is 21 degrees: a 30-degree sector keeps one gap, no ring.
+  EXPECT_LT(detail::plan_ring_gaps(30 * deg, 10.5 * deg, 0, detail::apex_gap_floor(80 * deg)).size(), 2u);
 }
 
 TEST(EqualiseStripApexes, the_apex_triangles_become_isosceles_and_their_wall_vertices_stay) {

@@ -349,9 +349,11 @@ std::array<double, 3> triangle_angles_deg(const Point2& a, const Point2& b, cons
           std::atan2(cr, vx * wx + vy * wy) * kDeg};
 }
 
+double narrowest_feasible_corner(double max_angle) { return 3.14159265358979323846 - 2.0 * max_angle; }
+
 std::vector<ForcedCorner> unsatisfiable_sectors(const Domain& domain, double min_angle_deg, double max_angle_deg) {
   // Corners a triangle can have with its other two angles in [min, max): (180 - 2 max, 180 - 2 min].
-  const double corner_lo = 180.0 - 2.0 * max_angle_deg, corner_hi = 180.0 - 2.0 * min_angle_deg;
+  const double corner_lo = narrowest_feasible_corner(max_angle_deg / kDeg) * kDeg, corner_hi = 180.0 - 2.0 * min_angle_deg;
   // Corners of a split sector are in [min, max) too.
   const double lo = std::max(min_angle_deg, corner_lo), hi = std::min(max_angle_deg, corner_hi);
   auto satisfiable = [&](double theta) {

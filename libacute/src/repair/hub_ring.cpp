@@ -1,5 +1,7 @@
 #include "repair/hub_ring.h"
 
+#include "repair/polar_fan.h"
+
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/sectors.h>
 #include <acute/ops/delaunay_flips.h>
@@ -102,7 +104,43 @@ bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below) {
   return changed;
 }
 
-bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below) {
+std::vector<double> plan_ring_gaps(double sector, double strip_first, double strip_last, double gap_floor) {
+  // Gaps from both walls, each side growing, until they fill the sector; then scaled to fit.
+  std::vector<double> from_a, from_b;
+  std::vector<bool> added_at_a;  // which side each gap was added on, in order
+  double next_a = strip_first > 0 ? kFirstGapStrips * strip_first : kWideGap;
+  double next_b = strip_last > 0 ? kFirstGapStrips * strip_last : kWideGap;
+  double total = 0;
+  while (total < sector) {
+    added_at_a.push_back(next_a <= next_b);
+    if (next_a <= next_b) {
+      from_a.push_back(next_a), total += next_a, next_a = std::min(next_a * kGapGrowth, kWideGap);
+    } else {
+      from_b.push_back(next_b), total += next_b, next_b = std::min(next_b * kGapGrowth, kWideGap);
+    }
+  }
+  // Scaled to fit, the gaps shrink by up to the last one's share: under a max bound below 90 that
+  // can leave apex gaps too narrow for it. The last gaps added go until the narrowest fits.
+  auto narrowest_scaled = [&] {
+    double m = INFINITY;
+    for (double g : from_a) m = std::min(m, g);
+    for (double g : from_b) m = std::min(m, g);
+    return m * sector / total;
+  };
+  while (added_at_a.size() > 1 && narrowest_scaled() < gap_floor) {
+    std::vector<double>& side = added_at_a.back() ? from_a : from_b;
+    total -= side.back();
+    side.pop_back();
+    added_at_a.pop_back();
+  }
+  std::vector<double> gaps = from_a;
+  gaps.insert(gaps.end(), from_b.rbegin(), from_b.rend());
+  for (double& g : gaps) g *= sector / total;
+  return gaps;
+}
+
+bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below, double max_angle) {
+  const double gap_floor = apex_gap_floor(max_angle);
   equalise_strip_apexes(sub, apex, strip_below);
   const Point2 c = point2(sub, apex);
   // Every ring is planned before any edit: the edits re-triangulate the apex's star, so the
@@ -119,22 +157,8 @@ bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below) {
     if (!strips.any()) continue;
     const Point2 pa = point2(sub, sub.to_vertex_handle(sector.first)), pb = point2(sub, sub.to_vertex_handle(sector.last));
     const double ra = (pa - c).norm(), rb = (pb - c).norm();
-    // Gaps from both walls, each side growing, until they fill the sector; then scaled to fit.
-    std::vector<double> from_a, from_b;
-    double next_a = strips.first > 0 ? kFirstGapStrips * strips.first : kWideGap;
-    double next_b = strips.last > 0 ? kFirstGapStrips * strips.last : kWideGap;
-    double total = 0;
-    while (total < sector.radians) {
-      if (next_a <= next_b) {
-        from_a.push_back(next_a), total += next_a, next_a = std::min(next_a * kGapGrowth, kWideGap);
-      } else {
-        from_b.push_back(next_b), total += next_b, next_b = std::min(next_b * kGapGrowth, kWideGap);
-      }
-    }
-    if (from_a.size() + from_b.size() < 2) continue;
-    std::vector<double> gaps = from_a;
-    gaps.insert(gaps.end(), from_b.rbegin(), from_b.rend());
-    for (double& g : gaps) g *= sector.radians / total;
+    const std::vector<double> gaps = plan_ring_gaps(sector.radians, strips.first, strips.last, gap_floor);
+    if (gaps.size() < 2) continue;
     // Ring radius along the sector: ra near wall a, rb near wall b, geometric in between.
     RingPlan plan;
     const double alpha_a = std::atan2(pa.y() - c.y(), pa.x() - c.x());

@@ -11,6 +11,8 @@
 
 #include <acute/mesh/mesh.h>
 
+#include <vector>
+
 namespace acute::detail {
 
 /// Gives every strip sector at apex (narrower than strip_below, wholly in sub) an isosceles apex
@@ -23,11 +25,20 @@ bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below);
 /// first radius of a ringed sector's walls), 0 when no wide sector at apex has a strip across a wall.
 double hub_ring_reach(const Mesh& mesh, VertexHandle apex, double strip_below);
 
+/// The gaps (radians, from the first wall to the last, summing to `sector`) of the ring in a wide
+/// sector with strips of strip_first / strip_last radians across its walls (0: none): from each
+/// strip's wall 1.5 strip angles, from a wall with none 0.5, each next 1.6 times wider, until they
+/// fill the sector; then scaled to fit, and the last ones dropped while the narrowest would be
+/// below gap_floor. Fewer than two gaps: no ring.
+std::vector<double> plan_ring_gaps(double sector, double strip_first, double strip_last, double gap_floor);
+
 /// Equalises the strips' apex triangles at `apex` (an Input vertex of the region copy sub), then
 /// rebuilds every wide sector there that has a strip sector narrower than `strip_below` (radians)
 /// across one of its walls: the movable vertices of
 /// the wide sector closer than 1.1 times its walls' first radii are removed and the ring inserted
-/// (then the mesh is made Delaunay). False when there is no such sector or nothing was rebuilt.
-bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below);
+/// (then the mesh is made Delaunay). No gap of the ring is narrower than apex_gap_floor(max_angle)
+/// (fewer, wider gaps where the planned ones would be). False when there is no such sector or
+/// nothing was rebuilt.
+bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below, double max_angle);
 
 }  // namespace acute::detail

@@ -3,6 +3,7 @@
 #include "repair/local_remesh.h"
 
 #include <acute/mesh/geometry.h>
+#include <acute/mesh/quality.h>
 #include <acute/mesh/sectors.h>
 #include <acute/ops/delaunay_flips.h>
 #include <acute/ops/insert.h>
@@ -122,12 +123,17 @@ std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector)
   return out;
 }
 
+double apex_gap_floor(double max_angle) {
+  constexpr double kMargin = 1.05;  // at max 85: gaps of 10.5 degrees or more, base angles at most 84.75
+  return kMargin * std::max(0.0, narrowest_feasible_corner(max_angle));
+}
+
 bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, double max_angle) {
   const std::vector<FanSector> sectors = wall_sectors(sub, apex);
   if (sectors.empty() || rings < 2) return false;
   double narrowest = INFINITY;
   for (const FanSector& s : sectors) narrowest = std::min(narrowest, s.angle);
-  const double g = wedge_growth(narrowest);
+  const double g = wedge_growth(narrowest), gap_floor = apex_gap_floor(max_angle);
   const Point2 c = point2(sub, apex);
 
   std::vector<VertexHandle> doomed;
@@ -181,7 +187,7 @@ bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, dou
     // degrees beside one of 11: two of 8.25, base angles 85.9); fewer and wider ones where a max
     // bound below 90 needs it (the narrowest sector's own apex triangle is forced).
     int gaps = std::max(1, static_cast<int>(std::lround(s.angle / narrowest)));
-    while (gaps > 1 && s.angle / gaps <= kPi - 2 * max_angle) --gaps;
+    while (gaps > 1 && s.angle / gaps < gap_floor) --gaps;
     const double step = 0.5 * s.angle / gaps;
     const double psi0 = std::atan2(u0.y(), u0.x());
     for (int j = 1; j < 2 * gaps; ++j) {

@@ -32,11 +32,18 @@ std::vector<SharpCorner> find_sharp_corners(const Mesh& mesh, double max_sector)
 /// a whole lattice ring between the apex triangles' chords and the old mesh.
 constexpr int kPolarFanRings = 3;
 
+/// The narrowest apex gap (the corner between two consecutive spokes at a forced vertex, radians)
+/// the fans and rings lay out under a max bound of max_angle: narrowest_feasible_corner with a
+/// margin, so that rounding and the smoothing that follows do not leave an isosceles apex triangle
+/// with base angles at the bound itself (a 30-degree sector cut in three at max 85: 85.03). 0 from
+/// max 90 degrees on.
+double apex_gap_floor(double max_angle);
+
 /// Rebuilds the disk of `radius` around `apex` (an Input vertex of sub whose whole star sub holds,
 /// with a sector narrower than the min bound, so the apex triangles' small angles are forced) as a
 /// log-polar lattice of `rings` rings; each sector is divided into the nearest multiple of the
-/// narrowest, or fewer parts where that would leave apex triangles with base angles of max_angle
-/// (radians) or more. False when sub was left unchanged or the rebuild could not be completed (sub
+/// narrowest, or fewer parts where that would leave apex gaps narrower than apex_gap_floor(max_angle)
+/// (radians). False when sub was left unchanged or the rebuild could not be completed (sub
 /// is then to be discarded).
 bool build_polar_fan(Mesh& sub, VertexHandle apex, double radius, int rings, double max_angle);
 

@@ -181,7 +181,7 @@ class Repairer {
     bool changed = false;
     for (const auto& [apex, reach] : hubs) {
       if (out_of_time()) break;
-      changed = rebuild_disk(apex, 1.6 * reach, "hub ring", [&](Mesh& sub, VertexHandle a) { return detail::rebuild_hub_ring(sub, a, strip_below); }) ||
+      changed = rebuild_disk(apex, 1.6 * reach, "hub ring", [&](Mesh& sub, VertexHandle a) { return detail::rebuild_hub_ring(sub, a, strip_below, bounds_.max_deg * kPi / 180); }) ||
                 changed;
     }
     if (changed) {

@@ -71,6 +71,11 @@ std::vector<ForcedCorner> forced_corners(const Domain& domain, double min_angle_
 /// no forced corner, and Steiner points rounded off a slanted segment can hide a corner).
 std::vector<ForcedCorner> forced_corners(const Domain& domain, double min_angle_deg, const Mesh& mesh);
 
+/// The widest triangle corner that leaves the other two angles summing to at least 2 max_angle, so
+/// one of them not below max_angle: pi - 2 max (radians; 0 or less from max 90 degrees on). A corner
+/// at a forced vertex (an apex gap) must be wider than this, and a sector this narrow cannot be met.
+double narrowest_feasible_corner(double max_angle);
+
 /// Input sectors (as forced_corners models them) where no mesh can meet the bounds, sorted by
 /// angle. A triangle's corner a in the sector leaves 180 - a for its other two angles, so only
 /// a in (180 - 2 max, 180 - 2 min] can keep them in [min, max). A sector below min is one such
