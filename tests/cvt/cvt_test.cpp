@@ -1,5 +1,6 @@
 #include "cvt/cvt_domains.h"
 #include "support/mesh_verify.h"
+#include "support/paths.h"
 
 #include <acute/cvt/cvt.h>
 #include <acute/delaunay/cdt.h>
@@ -174,7 +175,7 @@ TEST(Sampling, every_sample_goes_into_one_cdt_build) {
 TEST(Sampling, a_tiny_notch_on_a_long_wall_gets_its_fine_samples) {
   // tests/data/regressions/tiny_notch_star_at_1e8.poly (stress seed 132): the notch's tip is input
   // point 16; lattice cells overlapping the slivers there have their centroids outside the domain.
-  const Domain d = io::read_poly(std::string(ACUTE_TEST_DATA_DIR) + "/regressions/tiny_notch_star_at_1e8.poly");
+  const Domain d = io::read_poly(std::string(acute::test::test_data_dir()) + "/regressions/tiny_notch_star_at_1e8.poly");
   const Point2 tip = d.points[15];
   const Mesh cdt = build_cdt(d);
   SizeFieldParams sp;

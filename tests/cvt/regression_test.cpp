@@ -3,6 +3,7 @@
 // local feature size across a narrow neck (guitar) or channel.
 #include "cvt/cvt_domains.h"
 #include "support/mesh_verify.h"
+#include "support/paths.h"
 
 #include <acute/cvt/cvt.h>
 #include <acute/delaunay/cdt.h>
@@ -26,7 +27,7 @@ namespace fs = std::filesystem;
 
 /// Reads a classic shared domain; false when absent (the test then skips).
 bool read_classic(const std::string& name, Domain& out) {
-  const fs::path p = fs::path(ACUTE_SHARED_DIR) / "domains" / "classic" / (name + ".poly");
+  const fs::path p = fs::path(acute::test::shared_dir()) / "domains" / "classic" / (name + ".poly");
   if (!fs::exists(p)) return false;
   out = io::read_domain(p.string());
   return true;
@@ -54,7 +55,7 @@ void expect_on_segments(const Mesh& mesh, const std::string& name) {
 
 TEST(CvtRegression, sweden_2000_has_no_flat_triangles_and_few_obtuse) {
   Domain d;
-  if (!read_classic("Constrained_Sweden", d)) GTEST_SKIP() << "no shared domains at " << ACUTE_SHARED_DIR;
+  if (!read_classic("Constrained_Sweden", d)) GTEST_SKIP() << "no shared domains at " << acute::test::shared_dir();
   CvtParams cp;
   cp.target_vertices = 2000;
   cp.graded = true;
@@ -83,7 +84,7 @@ TEST(CvtRegression, sweden_2000_has_no_flat_triangles_and_few_obtuse) {
 
 TEST(CvtRegression, debug2_sampling_keeps_the_enclosure) {
   Domain d;
-  if (!read_classic("debug2", d)) GTEST_SKIP() << "no shared domains at " << ACUTE_SHARED_DIR;
+  if (!read_classic("debug2", d)) GTEST_SKIP() << "no shared domains at " << acute::test::shared_dir();
   const Mesh cdt = build_cdt(d);
   for (std::size_t n : {2000u}) {
     SizeFieldParams sp;
@@ -107,7 +108,7 @@ TEST(CvtRegression, debug2_sampling_keeps_the_enclosure) {
 
 TEST(CvtRegression, guitar_neck_size_is_the_width_of_the_neck) {
   Domain d;
-  if (!read_classic("guitar", d)) GTEST_SKIP() << "no shared domains at " << ACUTE_SHARED_DIR;
+  if (!read_classic("guitar", d)) GTEST_SKIP() << "no shared domains at " << acute::test::shared_dir();
   // Input vertices 83 and 90 (1-based in the file) are 0.215 apart across the neck.
   const Point2 a = d.points[82], b = d.points[89];
   ASSERT_NEAR((a - b).norm(), 0.2154, 1e-3) << d.name;

@@ -1,5 +1,6 @@
 #include "delaunay/cdt_checks.h"
 #include "delaunay/triangulation.h"
+#include "support/paths.h"
 
 #include <acute/core/errors.h>
 #include <acute/delaunay/cdt.h>
@@ -71,7 +72,7 @@ std::vector<Point2> grid(int n, double step = 1.0) {
 }
 
 std::string out_dir(const std::string& sub) {
-  const fs::path p = fs::path(ACUTE_TEST_OUTPUT_DIR) / "cdt" / sub;
+  const fs::path p = fs::path(acute::test::test_output_dir()) / "cdt" / sub;
   fs::create_directories(p);
   return p.string();
 }
@@ -310,7 +311,7 @@ TEST(Cdt, holes_nested_loops_and_dangling_segments) {
 // around vertex 3 without touching it, so the constrained edge 3-4 lay inside the cavity (a spike
 // of its left chain) and lost its label; build_cdt returned without segment 0.
 TEST(Cdt, regression_constrained_edge_inside_cavity_kept) {
-  const fs::path file = fs::path(ACUTE_TEST_DATA_DIR) / "regressions" / "cdt_dropped_segment.poly";
+  const fs::path file = fs::path(acute::test::test_data_dir()) / "regressions" / "cdt_dropped_segment.poly";
   Domain d = acute::io::read_domain(file.string());
   d.name = file.filename().string();
   d.convex_hull = true;
@@ -487,19 +488,19 @@ void check_poly_folder(const fs::path& dir, const std::string& sub) {
 }
 
 TEST(Cdt, classic_domains_are_valid_cdts) {
-  const fs::path dir = fs::path(ACUTE_SHARED_DIR) / "domains" / "classic";
+  const fs::path dir = fs::path(acute::test::shared_dir()) / "domains" / "classic";
   if (files_in(dir, ".poly").empty()) GTEST_SKIP() << "no shared classic domains";
   check_poly_folder(dir, "classic");
 }
 
 TEST(Cdt, bundled_meshes_dir_domains_are_valid_cdts) {
-  const fs::path dir = fs::path(ACUTE_MESHES_DIR);
+  const fs::path dir = fs::path(acute::test::meshes_dir());
   if (files_in(dir, ".poly").empty()) GTEST_SKIP() << "no .poly in " << dir;
   check_poly_folder(dir, "meshes");
 }
 
 TEST(Cdt, cgshop_instances_are_valid_cdts) {
-  auto files = files_in(fs::path(ACUTE_SHARED_DIR) / "domains" / "cgshop2025" / "instances", ".instance.json");
+  auto files = files_in(fs::path(acute::test::shared_dir()) / "domains" / "cgshop2025" / "instances", ".instance.json");
   if (files.empty()) GTEST_SKIP() << "no CG:SHOP instances";
   EXPECT_EQ(files.size(), 150u);
   const std::string out = out_dir("cgshop");

@@ -2,6 +2,7 @@
 // cdt_split_*.poly) and on random crossing segments: the result is a CDT of the domain with every
 // crossing as a vertex (rounded), checked by the fuzzers' independent verifier.
 #include "fuzz/fuzz_common.h"
+#include "support/paths.h"
 
 #include <acute/core/errors.h>
 #include <acute/delaunay/cdt.h>
@@ -59,7 +60,7 @@ std::string split_and_verify(const Domain& d, CdtStats* stats = nullptr) {
 class SplitRegression : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SplitRegression, is_a_valid_cdt_with_every_segment_a_chain) {
-  const fs::path file = fs::path(ACUTE_TEST_DATA_DIR) / "regressions" / GetParam();
+  const fs::path file = fs::path(acute::test::test_data_dir()) / "regressions" / GetParam();
   Domain d = read_raw_poly(file);
   // The not-Delaunay case came from the fuzzer with Triangle -c; the others without.
   d.convex_hull = std::string(GetParam()).find("not_delaunay") != std::string::npos;

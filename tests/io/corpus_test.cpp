@@ -1,5 +1,6 @@
 // Every real input we ship or share reads and validates.
 #include "io/io_test_util.h"
+#include "support/paths.h"
 
 #include <acute/io/io.h>
 
@@ -11,7 +12,7 @@ using namespace acute;
 using acute::test::files_in;
 
 namespace {
-const std::string kMeshes = ACUTE_MESHES_DIR;
+const std::string kMeshes = acute::test::meshes_dir();
 
 void expect_domains_load(const std::vector<std::string>& files) {
   for (const auto& path : files) {
@@ -54,26 +55,26 @@ TEST(Corpus, bundled_meshes_read_and_their_domains_validate) {
 }
 
 TEST(Corpus, shared_classic_domains_validate) {
-  const auto files = files_in(test::shared_dir("domains/classic"), {".poly"});
-  if (files.empty()) GTEST_SKIP() << "no shared domains at " << ACUTE_SHARED_DIR;
+  const auto files = files_in(test::shared_path("domains/classic"), {".poly"});
+  if (files.empty()) GTEST_SKIP() << "no shared domains at " << acute::test::shared_dir();
   EXPECT_EQ(files.size(), 24u);
   expect_domains_load(files);
 }
 
 TEST(Corpus, shared_cgshop_instances_validate) {
-  auto files = files_in(test::shared_dir("domains/cgshop2025/instances"), {".json"});
-  if (files.empty()) GTEST_SKIP() << "no shared instances at " << ACUTE_SHARED_DIR;
+  auto files = files_in(test::shared_path("domains/cgshop2025/instances"), {".json"});
+  if (files.empty()) GTEST_SKIP() << "no shared instances at " << acute::test::shared_dir();
   EXPECT_EQ(files.size(), 150u);
-  const auto examples = files_in(test::shared_dir("domains/cgshop2025/examples"), {".json"});
+  const auto examples = files_in(test::shared_path("domains/cgshop2025/examples"), {".json"});
   files.insert(files.end(), examples.begin(), examples.end());
   expect_domains_load(files);
 }
 
 TEST(Corpus, shared_meshes_read) {
-  auto files = files_in(test::shared_dir("domains/meshes"), {".off", ".obj"});
-  if (files.empty()) GTEST_SKIP() << "no shared meshes at " << ACUTE_SHARED_DIR;
+  auto files = files_in(test::shared_path("domains/meshes"), {".off", ".obj"});
+  if (files.empty()) GTEST_SKIP() << "no shared meshes at " << acute::test::shared_dir();
   EXPECT_EQ(files.size(), 9u);
-  const auto originals = files_in(test::shared_dir("domains/meshes/originals"), {".node"});
+  const auto originals = files_in(test::shared_path("domains/meshes/originals"), {".node"});
   files.insert(files.end(), originals.begin(), originals.end());
   for (const auto& path : files) {
     try {
@@ -88,7 +89,7 @@ TEST(Corpus, shared_meshes_read) {
 // Not an assertion: tells the CDT engineer which inputs have points inside segments.
 TEST(Corpus, report_points_on_segments) {
   std::vector<std::string> files = files_in(kMeshes, {".poly"});
-  const auto cg = files_in(test::shared_dir("domains/cgshop2025/instances"), {".json"});
+  const auto cg = files_in(test::shared_path("domains/cgshop2025/instances"), {".json"});
   files.insert(files.end(), cg.begin(), cg.end());
   std::size_t n_files = 0, n_total = 0;
   for (const auto& path : files) {

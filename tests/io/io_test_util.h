@@ -3,6 +3,8 @@
 
 #include <acute/core/errors.h>
 
+#include "support/paths.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -12,10 +14,10 @@
 
 namespace acute::test {
 
-inline std::string data(const std::string& name) { return std::string(ACUTE_TEST_DATA_DIR) + "/" + name; }
+inline std::string data(const std::string& name) { return std::string(acute::test::test_data_dir()) + "/" + name; }
 inline std::string bad(const std::string& name) { return data("bad/" + name); }
-inline std::string output(const std::string& name) { return std::string(ACUTE_TEST_OUTPUT_DIR) + "/" + name; }
-inline std::string shared_dir(const std::string& sub) { return std::string(ACUTE_SHARED_DIR) + "/" + sub; }
+inline std::string output(const std::string& name) { return std::string(acute::test::test_output_dir()) + "/" + name; }
+inline std::string shared_path(const std::string& sub) { return std::string(acute::test::shared_dir()) + "/" + sub; }
 
 /// Files with one of the extensions in a folder (sorted), or empty when the folder is absent.
 inline std::vector<std::string> files_in(const std::string& dir, std::initializer_list<const char*> exts) {

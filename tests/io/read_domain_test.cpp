@@ -1,4 +1,5 @@
 #include "io/io_test_util.h"
+#include "support/paths.h"
 
 #include <acute/io/io.h>
 #include <acute/predicates/predicates.h>
@@ -44,7 +45,7 @@ TEST(ReadPoly, zero_based_with_comments_markers_attributes_and_regions) {
 }
 
 TEST(ReadPoly, one_based_classic_A) {
-  const Domain d = io::read_poly(std::string(ACUTE_MESHES_DIR) + "/A.poly");
+  const Domain d = io::read_poly(std::string(acute::test::meshes_dir()) + "/A.poly");
   EXPECT_EQ(d.points.size(), 29u);
   EXPECT_EQ(d.segments.size(), 29u);
   EXPECT_EQ(d.holes.size(), 1u);
@@ -156,7 +157,7 @@ TEST(ReadDomain, dispatches_by_extension) {
 
 TEST(ReadDomain, mesh_boundary_becomes_segments_and_holes_get_seeds) {
   // square_circle_hole.1.off: the square with a polygonal circular hole, 135 boundary edges.
-  const std::string path = std::string(ACUTE_MESHES_DIR) + "/square_circle_hole.1.off";
+  const std::string path = std::string(acute::test::meshes_dir()) + "/square_circle_hole.1.off";
   const Domain d = io::read_domain(path);
   EXPECT_EQ(d.segments.size(), 135u) << path;
   EXPECT_EQ(d.points.size(), 135u) << path << ": boundary vertices only";

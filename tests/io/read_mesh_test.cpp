@@ -1,4 +1,5 @@
 #include "io/io_test_util.h"
+#include "support/paths.h"
 
 #include <acute/io/io.h>
 #include <acute/mesh/boundary.h>
@@ -97,14 +98,14 @@ TEST(ReadMesh, binary_ply_little_and_big_endian) {
 }
 
 TEST(ReadMesh, node_ele_with_markers) {
-  const std::string path = std::string(ACUTE_SHARED_DIR) + "/domains/meshes/originals/A.1.node";
+  const std::string path = std::string(acute::test::shared_dir()) + "/domains/meshes/originals/A.1.node";
   if (!std::ifstream(path)) GTEST_SKIP() << path << " absent";
   const Mesh m = io::read_mesh(path);
   EXPECT_EQ(m.n_vertices(), 29u);
   EXPECT_EQ(n_faces(m), 29u);
   EXPECT_EQ(m.data(VertexHandle(0)).marker, 1) << "node marker kept";
   // Same geometry as the converted OFF.
-  const Mesh off = io::read_mesh(std::string(ACUTE_MESHES_DIR) + "/A.1.off");
+  const Mesh off = io::read_mesh(std::string(acute::test::meshes_dir()) + "/A.1.off");
   for (auto vh : m.vertices()) EXPECT_EQ(m.point(vh), off.point(vh)) << "vertex " << vh.idx();
 }
 
@@ -232,7 +233,7 @@ TEST(ReadTaggedEdges, obj_polyline_gives_each_consecutive_pair_with_its_line) {
   EXPECT_EQ(edges[1].line, 37);
   // The mesh itself reads as before: the polyline is not a face.
   EXPECT_EQ(io::read_mesh(data("tagged_polyline.obj")).n_faces(), 18u);
-  EXPECT_TRUE(io::read_tagged_edges(std::string(ACUTE_MESHES_DIR) + "/grid.off").empty()) << "OFF tags no edge";
+  EXPECT_TRUE(io::read_tagged_edges(std::string(acute::test::meshes_dir()) + "/grid.off").empty()) << "OFF tags no edge";
 }
 
 TEST(ReadTaggedEdges, relative_and_slashed_indices_resolve_and_bad_ones_name_the_line) {

@@ -1,4 +1,5 @@
 #include "io/io_test_util.h"
+#include "support/paths.h"
 
 #include <acute/io/io.h>
 
@@ -206,7 +207,7 @@ TEST(WriteSvg, vertex_labels_name_every_vertex) {
 }
 
 TEST(WriteSvg, large_mesh_stays_small) {
-  const std::string path = std::string(ACUTE_MESHES_DIR) + "/greenland.off";
+  const std::string path = std::string(acute::test::meshes_dir()) + "/greenland.off";
   const Mesh m = io::read_mesh(path);
   io::write_svg(m, output("greenland.svg"));
   const auto bytes = std::filesystem::file_size(output("greenland.svg"));

@@ -4,6 +4,8 @@
 #include <acute/io/io.h>
 #include <acute/mesher.h>
 
+#include "support/paths.h"
+
 #include <nlohmann/json.hpp>
 #include <gtest/gtest.h>
 
@@ -84,7 +86,7 @@ TEST(CgshopSolution, written_solution_reads_back_to_the_mesh) {
   const auto vh = m.add_vertex(Mesh::Point(mid.x() + 0.1, mid.y(), 0));  // 0.1: not a dyadic with a short form
   m.split(split, vh);
 
-  const auto path = (std::filesystem::path(ACUTE_TEST_OUTPUT_DIR) / "unit_square_test.solution.json").string();
+  const auto path = (std::filesystem::path(acute::test::test_output_dir()) / "unit_square_test.solution.json").string();
   io::write_cgshop_solution(m, d, path);
   std::ifstream in(path);
   const nlohmann::json j = nlohmann::json::parse(in);
@@ -138,7 +140,7 @@ TEST(CgshopSolution, exact_coordinates_put_segment_vertices_exactly_on_slanted_s
   EXPECT_NEAR(static_cast<double>(px) / static_cast<double>(qx), 0.3, 1e-12) << xy[0];
   // a vertex not on a segment is written as its double
   EXPECT_EQ(io::exact_coordinates(m, VertexHandle(1))[0], "3") << "input vertex";
-  const auto path = (std::filesystem::path(ACUTE_TEST_OUTPUT_DIR) / "slanted_exact.off").string();
+  const auto path = (std::filesystem::path(acute::test::test_output_dir()) / "slanted_exact.off").string();
   io::write_off_exact(m, path);
   std::ifstream in(path);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

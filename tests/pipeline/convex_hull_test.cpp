@@ -9,6 +9,7 @@
 #include <acute/mesher.h>
 
 #include "fuzz/fuzz_common.h"
+#include "support/paths.h"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +22,7 @@ namespace {
 Domain read_readable(const std::string& name) {
   io::ReadOptions read;
   read.allow_crossing_segments = true;
-  Domain d = io::read_poly(std::string(ACUTE_TEST_DATA_DIR) + "/../fuzz/readable/" + name + ".poly", {}, read);
+  Domain d = io::read_poly(std::string(acute::test::test_data_dir()) + "/../fuzz/readable/" + name + ".poly", {}, read);
   d.convex_hull = true;
   return d;
 }

@@ -5,6 +5,7 @@
 #include <acute/repair/repair.h>
 
 #include "support/domain_verify.h"
+#include "support/paths.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +15,7 @@ namespace acute {
 namespace {
 
 TEST(MeshDomain, obj_polyline_is_kept_as_a_chain_of_edges_and_the_bounds_are_met) {
-  const std::string path = std::string(ACUTE_TEST_DATA_DIR) + "/tagged_polyline.obj";
+  const std::string path = std::string(acute::test::test_data_dir()) + "/tagged_polyline.obj";
   const Domain domain = io::read_domain(path);
   MeshOptions options;
   options.target_vertices = 300;

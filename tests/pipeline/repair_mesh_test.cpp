@@ -11,6 +11,7 @@
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include "support/cgshop_samples.h"
+#include "support/paths.h"
 
 #include <gtest/gtest.h>
 
@@ -325,12 +326,12 @@ TEST(RepairMesh, pinch_vertex_meshes_are_repaired_and_keep_the_pinch) {
   for (const Case& c : {Case{"pinch_squares.off", Point2(1, 1)}, Case{"pinch_hole.off", Point2(2, 0)}})
     for (double feature : {0.0, 10.0}) {
       const std::string name = std::string(c.file) + " --feature-angle " + std::to_string(feature);
-      const Mesh in = io::read_mesh(std::string(ACUTE_TEST_DATA_DIR) + "/" + c.file);
+      const Mesh in = io::read_mesh(std::string(acute::test::test_data_dir()) + "/" + c.file);
       RepairMeshOptions o;
       o.feature_angle_deg = feature;
       const RepairMeshResult r = repair_mesh(in, o);
       expect_repaired(in, r, name);
-      const auto path = (fs::path(ACUTE_TEST_OUTPUT_DIR) / ("repaired_" + std::string(c.file))).string();
+      const auto path = (fs::path(acute::test::test_output_dir()) / ("repaired_" + std::string(c.file))).string();
       io::write_mesh(r.mesh, path);
       const Mesh back = io::read_mesh(path);
       EXPECT_EQ(conforms(in, back, false), "") << name << ", read back";
@@ -346,7 +347,7 @@ TEST(RepairMesh, pinch_vertex_meshes_are_repaired_and_keep_the_pinch) {
 }
 
 TEST(RepairMesh, shared_meshes_conform_and_meet_the_bounds) {
-  const fs::path dir = fs::path(ACUTE_SHARED_DIR) / "domains" / "meshes";
+  const fs::path dir = fs::path(acute::test::shared_dir()) / "domains" / "meshes";
   if (!fs::is_directory(dir)) GTEST_SKIP() << dir << " absent";
   int n = 0;
   for (const auto& entry : fs::directory_iterator(dir)) {
@@ -422,7 +423,7 @@ TEST(RepairMeshInvalid, empty_and_bad_features_are_refused) {
 }
 
 TEST(RepairMeshInvalid, non_manifold_files_are_refused_naming_the_element) {
-  const fs::path bad = fs::path(ACUTE_TEST_DATA_DIR) / "bad";
+  const fs::path bad = fs::path(acute::test::test_data_dir()) / "bad";
   for (const char* file : {"nonmanifold_edge.off", "nonmanifold_vertex.off", "overlapping_fans.off", "folded_face.off"}) {
     try {
       const Mesh m = io::read_mesh((bad / file).string());

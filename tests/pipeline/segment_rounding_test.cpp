@@ -8,6 +8,7 @@
 #include <acute/ops/insert.h>
 
 #include "support/domain_verify.h"
+#include "support/paths.h"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +19,7 @@ namespace acute {
 namespace {
 
 void expect_segments_read_back(const std::string& name) {
-  const Domain domain = io::read_poly(std::string(ACUTE_TEST_DATA_DIR) + "/regressions/" + name + ".poly");
+  const Domain domain = io::read_poly(std::string(acute::test::test_data_dir()) + "/regressions/" + name + ".poly");
   MeshOptions options;
   options.target_vertices = 300;
   options.time_limit_s = 3;  // a safety net: validity is asserted whatever stopped the run
@@ -39,7 +40,7 @@ TEST(SegmentRounding, tiny_notch_far_from_origin) { expect_segments_read_back("t
 // Sides ~1.1e-7 long at -1000 (an ulp is 1e-6 of them): repeated midpoint splits of the notch
 // pieces either land within kMaxSegmentDeviation of the side's line, in order, or are refused.
 TEST(SegmentRounding, tiny_notch_far_from_origin_splits_stay_on_the_sides_or_are_refused) {
-  const Domain domain = io::read_poly(std::string(ACUTE_TEST_DATA_DIR) + "/regressions/tiny_notch_far_from_origin.poly");
+  const Domain domain = io::read_poly(std::string(acute::test::test_data_dir()) + "/regressions/tiny_notch_far_from_origin.poly");
   Mesh mesh = build_domain_cdt(domain);
   int accepted = 0, refused = 0;
   for (int round = 0; round < 6; ++round) {

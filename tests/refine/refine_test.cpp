@@ -1,6 +1,7 @@
 // Delaunay refinement: validity, the angle bound away from forced corners, the size bound,
 // conformity to the input segments, determinism and the vertex budget.
 #include "support/mesh_verify.h"
+#include "support/paths.h"
 
 #include <acute/io/io.h>
 #include <acute/mesh/check.h>
@@ -265,7 +266,7 @@ TEST(Refine, pipeline_method_refine_with_vertex_target) {
 }
 
 TEST(Refine, classic_domains_with_small_angles) {
-  const fs::path dir = fs::path(ACUTE_SHARED_DIR) / "domains" / "classic";
+  const fs::path dir = fs::path(acute::test::shared_dir()) / "domains" / "classic";
   if (!fs::exists(dir)) GTEST_SKIP() << "no shared domains at " << dir;
   for (const char* name : {"la", "debug", "clusters", "fish-and-rectangle", "bird", "superior", "trivial", "A"}) {
     const Domain d = io::read_domain((dir / (std::string(name) + ".poly")).string());

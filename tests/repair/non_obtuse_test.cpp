@@ -11,6 +11,7 @@
 
 #include <gmpxx.h>
 #include "support/cgshop_samples.h"
+#include "support/paths.h"
 
 #include <gtest/gtest.h>
 
@@ -116,7 +117,7 @@ TEST(NonObtuse, exterior_instances_the_greedy_search_stalled_on_are_finished) {
   const std::pair<const char*, std::size_t> cases[] = {{"simple-polygon-exterior_20_92dcd467", 20},
                                                        {"simple-polygon-exterior_40_785575e7", 30}};
   for (const auto& [uid, best_known] : cases) {
-    const Domain d = io::read_cgshop(std::string(ACUTE_MESHES_DIR) + "/cgshop/" + uid + ".instance.json");
+    const Domain d = io::read_cgshop(std::string(acute::test::meshes_dir()) + "/cgshop/" + uid + ".instance.json");
     const NonObtuseResult r = non_obtuse_triangulation(d);
     expect_conforming(d, r, uid);
     EXPECT_TRUE(r.ok) << uid << ": " << r.n_obtuse << " obtuse";
@@ -146,7 +147,7 @@ Mesh repaired_start(const Domain& d) {
 // from the repaired start every input point is kept and nothing is obtuse, exactly.
 TEST(NonObtuse, repaired_start_is_finished_exactly_and_pruned) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::path(ACUTE_SHARED_DIR) / "domains" / "cgshop2025" / "instances";
+  const fs::path dir = fs::path(acute::test::shared_dir()) / "domains" / "cgshop2025" / "instances";
   int n = 0;
   for (const char* uid : {"point-set_10_7451a2a9", "point-set_10_f999dc7f"}) {
     const fs::path path = dir / (std::string(uid) + ".instance.json");

@@ -5,6 +5,7 @@
 
 #include "repair/region.h"
 #include "support/mesh_verify.h"
+#include "support/paths.h"
 
 #include <algorithm>
 #include <set>
@@ -127,7 +128,7 @@ namespace {
 // Regression (stress seed, issue 9): two triangles touching at one vertex; region copies around the
 // pinch used to re-add faces at a complex vertex and leave an invalid mesh.
 TEST(Repair, regression_pinch_vertex_domain_stays_valid) {
-  const Domain d = io::read_poly(std::string(ACUTE_TEST_DATA_DIR) + "/regressions/pinch_vertex.poly");
+  const Domain d = io::read_poly(std::string(acute::test::test_data_dir()) + "/regressions/pinch_vertex.poly");
   MeshOptions options;
   options.target_vertices = 300;
   const MeshResult result = generate_mesh(d, options);

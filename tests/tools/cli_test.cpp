@@ -3,6 +3,8 @@
 #include <acute/io/io.h>
 #include <acute/mesh/mesh.h>
 
+#include "support/paths.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,8 +23,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string mesh_file(const std::string& name) { return std::string(ACUTE_MESHES_DIR) + "/" + name; }
-std::string out(const std::string& name) { return std::string(ACUTE_TEST_OUTPUT_DIR) + "/cli_" + name; }
+std::string mesh_file(const std::string& name) { return std::string(acute::test::meshes_dir()) + "/" + name; }
+std::string out(const std::string& name) { return std::string(acute::test::test_output_dir()) + "/cli_" + name; }
 
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -177,7 +179,7 @@ bool segment_is_a_chain_of_edges(const acute::Mesh& mesh, const acute::Point2& p
 }
 
 TEST(RepairFeatures, ObjPolylinesInTheInputAreKeptAsEdges) {
-  const std::string in = std::string(ACUTE_TEST_DATA_DIR) + "/tagged_polyline.obj", fixed = out("tagged_fixed.off");
+  const std::string in = std::string(acute::test::test_data_dir()) + "/tagged_polyline.obj", fixed = out("tagged_fixed.off");
   const CliRun r = acute("repair " + quoted(in) + " -o " + quoted(fixed), "repair_tagged");
   ASSERT_EQ(r.code, 0) << r.err;
   const acute::Mesh m = acute::io::read_mesh(fixed);
