@@ -40,20 +40,28 @@ TEST(InsertPoint, on_constrained_boundary_edge_creates_on_segment_vertex) {
   EXPECT_MESH_VALID(mesh);
 }
 
-TEST(InsertPoint, from_a_vertex_tries_its_faces_until_a_walk_is_not_blocked) {
-  // A 2 x 2 grid with the line x = 1 constrained: from (1, 1) a walk towards (1.5, 0.5) that starts
-  // left of the line is blocked by it, one that starts right of it is not; from (0, 2) every
-  // walk is blocked.
+/// A 2 x 2 grid with the line x = 1 constrained; its centre (1, 1) on the line and its corner (0, 2).
+struct GridWithLine {
   Mesh mesh = test::grid_mesh(2);
-  for (auto eh : mesh.edges()) {
-    const auto h = mesh.halfedge_handle(eh, 0);
-    if (point2(mesh, mesh.from_vertex_handle(h)).x() == 1 && point2(mesh, mesh.to_vertex_handle(h)).x() == 1) mesh.data(eh).segment = 4;
-  }
   VertexHandle centre, corner;
-  for (auto vh : mesh.vertices()) {
-    if (point2(mesh, vh) == Point2(1, 1)) centre = vh;
-    if (point2(mesh, vh) == Point2(0, 2)) corner = vh;
+  GridWithLine() {
+    for (auto eh : mesh.edges()) {
+      const auto h = mesh.halfedge_handle(eh, 0);
+      if (point2(mesh, mesh.from_vertex_handle(h)).x() == 1 && point2(mesh, mesh.to_vertex_handle(h)).x() == 1) mesh.data(eh).segment = 4;
+    }
+    for (auto vh : mesh.vertices()) {
+      if (point2(mesh, vh) == Point2(1, 1)) centre = vh;
+      if (point2(mesh, vh) == Point2(0, 2)) corner = vh;
+    }
   }
+};
+
+TEST(InsertPoint, from_a_vertex_tries_its_faces_until_a_walk_is_not_blocked) {
+  // From (1, 1) a walk towards (1.5, 0.5) that starts left of the line is blocked by it, one that
+  // starts right of it is not; from (0, 2) every walk is blocked.
+  GridWithLine g;
+  Mesh& mesh = g.mesh;
+  const VertexHandle centre = g.centre, corner = g.corner;
   const Point2 q(1.5, 0.5);
   int blocked = 0;
   for (auto fh : mesh.vf_range(centre)) blocked += locate(mesh, q, fh).kind == LocationKind::Blocked;
@@ -68,19 +76,11 @@ TEST(InsertPoint, from_a_vertex_tries_its_faces_until_a_walk_is_not_blocked) {
 }
 
 TEST(InsertPoint, after_a_blocked_or_missing_previous_vertex_walks_from_the_anchor) {
-  // The same grid and line: points right of x = 1 inserted one after another, the first with no
-  // previous vertex, the second after one left of the line (every walk from it blocked), the third
-  // after the second.
-  Mesh mesh = test::grid_mesh(2);
-  for (auto eh : mesh.edges()) {
-    const auto h = mesh.halfedge_handle(eh, 0);
-    if (point2(mesh, mesh.from_vertex_handle(h)).x() == 1 && point2(mesh, mesh.to_vertex_handle(h)).x() == 1) mesh.data(eh).segment = 4;
-  }
-  VertexHandle centre, corner;
-  for (auto vh : mesh.vertices()) {
-    if (point2(mesh, vh) == Point2(1, 1)) centre = vh;
-    if (point2(mesh, vh) == Point2(0, 2)) corner = vh;
-  }
+  // Points right of x = 1 inserted one after another, the first with no previous vertex, the second
+  // after one left of the line (every walk from it blocked), the third after the second.
+  GridWithLine g;
+  Mesh& mesh = g.mesh;
+  const VertexHandle centre = g.centre, corner = g.corner;
   const VertexHandle a = insert_point_after(mesh, Point2(1.5, 0.5), VertexHandle(), centre);
   ASSERT_TRUE(a.is_valid());
   const VertexHandle b = insert_point_after(mesh, Point2(1.5, 1.5), corner, centre);
