@@ -19,6 +19,9 @@
 #include <utility>
 #include <vector>
 
+/// The `acute` binary's path (tests/tools/tests.cmake generates the definition).
+const char* acute_cli_path();
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -43,7 +46,7 @@ struct CliRun {
 /// Runs `acute ARGS` through the shell with stdout and stderr sent to files (not a terminal).
 CliRun acute(const std::string& args, const std::string& name) {
   const std::string o = out(name + ".stdout"), e = out(name + ".stderr");
-  const std::string command = quoted(ACUTE_CLI) + " " + args + " >" + quoted(o) + " 2>" + quoted(e) + " </dev/null";
+  const std::string command = quoted(acute_cli_path()) + " " + args + " >" + quoted(o) + " 2>" + quoted(e) + " </dev/null";
   const int status = std::system(command.c_str());
   CliRun r;
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -268,7 +271,7 @@ TEST(Progress, ShownOnATerminalUnlessQuiet) {
   if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "util-linux `script` is needed for a pseudo-terminal";
   // script(1) runs the command on a pseudo-terminal and copies what it shows to our stdout.
   auto on_terminal = [](const std::string& args) {
-    const std::string command = quoted(ACUTE_CLI) + " " + args;
+    const std::string command = quoted(acute_cli_path()) + " " + args;
     return shell("script -qec " + quoted(command) + " /dev/null </dev/null 2>&1");
   };
   // Bounds of [55, 65) are never met on A: the repair runs to the 3 s limit, long enough for the
