@@ -120,12 +120,11 @@ std::vector<double> plan_ring_gaps(double sector, double strip_first, double str
     }
   }
   // Scaled to fit, the gaps shrink by up to the last one's share: under a max bound below 90 that
-  // can leave apex gaps too narrow for it. The last gaps added go until the narrowest fits.
+  // can leave apex gaps too narrow for it. The last gaps added go until the narrowest fits (each
+  // side's gaps only grow, so the narrowest is a side's first).
   auto narrowest_scaled = [&] {
-    double m = INFINITY;
-    for (double g : from_a) m = std::min(m, g);
-    for (double g : from_b) m = std::min(m, g);
-    return m * sector / total;
+    const double a = from_a.empty() ? INFINITY : from_a.front(), b = from_b.empty() ? INFINITY : from_b.front();
+    return std::min(a, b) * sector / total;
   };
   while (added_at_a.size() > 1 && narrowest_scaled() < gap_floor) {
     std::vector<double>& side = added_at_a.back() ? from_a : from_b;
@@ -189,7 +188,7 @@ bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below, double m
     if (!remove_vertices(sub, doomed)) return false;
     // Each point located from the faces of the one before, then from the apex's (the walk never
     // crosses a wall, so it must start on the sector's side).
-    VertexHandle last = apex;
+    VertexHandle last;
     for (const Point2& q : plan.ring) {
       const VertexHandle vh = insert_point_after(sub, q, last, apex);
       if (!vh.is_valid() || sub.data(vh).kind != VertexKind::Free) return false;
