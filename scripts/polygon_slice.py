@@ -1,0 +1,47 @@
+#!/usr/bin/env python3
+"""Cuts a wedge out of a star-shaped polygon: its first N+1 vertices and a centre, as a new .poly.
+
+Usage: scripts/polygon_slice.py DOMAIN.poly N OUT.poly [--centre X Y]
+
+debug2 (10,000 vertices 0.036 degrees apart round the origin) is too large to experiment on: its
+features ask ~4M vertices. A slice of N consecutive vertices closed at the origin keeps the same
+strips and spikes at N / 10,000 of the size (N = 250: a 9-degree wedge, ~110k vertices at the
+domain's own size field), so a change to the start or the repair can be judged in a minute.
+Only single-polygon .poly files whose segments join consecutive vertices are meaningful input.
+"""
+import argparse, sys
+
+
+def read_poly_points(path):
+    rows = []
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].split()
+            if line: rows.append(line)
+    n = int(rows[0][0])
+    return [(rows[1 + i][1], rows[1 + i][2]) for i in range(n)]  # coordinates kept as text
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("domain")
+    ap.add_argument("n", type=int, help="vertices of the slice's outer chain, minus one")
+    ap.add_argument("out")
+    ap.add_argument("--centre", nargs=2, default=["0", "0"], metavar=("X", "Y"))
+    a = ap.parse_args()
+    points = read_poly_points(a.domain)
+    if not 2 <= a.n < len(points):
+        sys.exit(f"polygon_slice: {a.domain}: N must be in [2, {len(points) - 1}]")
+    chain = [tuple(a.centre)] + points[: a.n + 1]
+    with open(a.out, "w") as f:
+        f.write(f"# The centre ({a.centre[0]}, {a.centre[1]}) and vertices 1..{a.n + 1} of {a.domain}"
+                " (scripts/polygon_slice.py).\n")
+        f.write(f"{len(chain)} 2 0 0\n")
+        for i, (x, y) in enumerate(chain): f.write(f"{i + 1} {x} {y}\n")
+        f.write(f"{len(chain)} 0\n")
+        for i in range(len(chain)): f.write(f"{i + 1} {i + 1} {(i + 1) % len(chain) + 1}\n")
+        f.write("0\n")
+
+
+if __name__ == "__main__":
+    main()
