@@ -9,7 +9,7 @@ strips and spikes at N / 10,000 of the size (N = 250: a 9-degree wedge, ~110k ve
 domain's own size field), so a change to the start or the repair can be judged in a minute.
 Only single-polygon .poly files whose segments join consecutive vertices are meaningful input.
 """
-import argparse, sys
+import argparse, os, sys, tempfile
 
 
 def read_poly_points(path):
@@ -29,11 +29,18 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--centre", nargs=2, default=["0", "0"], metavar=("X", "Y"))
     a = ap.parse_args()
-    points = read_poly_points(a.domain)
+    if os.path.exists(a.out) and os.path.samefile(a.out, a.domain):
+        sys.exit(f"polygon_slice: {a.out}: the output would overwrite the input")
+    try:
+        points = read_poly_points(a.domain)
+    except (OSError, ValueError, IndexError) as e:
+        sys.exit(f"polygon_slice: {a.domain}: not a readable .poly with its vertices inline ({e})")
     if not 2 <= a.n < len(points):
         sys.exit(f"polygon_slice: {a.domain}: N must be in [2, {len(points) - 1}]")
     chain = [tuple(a.centre)] + points[: a.n + 1]
-    with open(a.out, "w") as f:
+    # Written beside the output, then renamed over it: never a half-written .poly.
+    fd, tmp = tempfile.mkstemp(dir=os.path.dirname(os.path.abspath(a.out)), suffix=".poly.tmp")
+    with os.fdopen(fd, "w") as f:
         f.write(f"# The centre ({a.centre[0]}, {a.centre[1]}) and vertices 1..{a.n + 1} of {a.domain}"
                 " (scripts/polygon_slice.py).\n")
         f.write(f"{len(chain)} 2 0 0\n")
@@ -41,7 +48,7 @@ def main():
         f.write(f"{len(chain)} 0\n")
         for i in range(len(chain)): f.write(f"{i + 1} {i + 1} {(i + 1) % len(chain) + 1}\n")
         f.write("0\n")
-
+    os.replace(tmp, a.out)
 
 if __name__ == "__main__":
     main()
