@@ -3,11 +3,18 @@
 // all locally Delaunay, whether it was repaired by flips or rebuilt.
 #include "cvt/site_delaunay.h"
 
+#include "cvt/cvt_domains.h"
+
+#include <acute/delaunay/cdt.h>
+#include <acute/mesh/geometry.h>
+
 #include <acute/predicates/predicates.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -67,6 +74,69 @@ TEST(SiteDelaunay, sites_sliding_along_a_slanted_hull_segment_keep_a_valid_trian
   // Every move is repaired by flips: without the frame, the segment's hull slivers turn over and
   // force a rebuild.
   EXPECT_EQ(dt.rebuilds(), 1u);
+}
+
+/// A constrained Delaunay mesh of the wedge with a hole and random interior points: its sites (in
+/// vertex order) and its faces and border as a seed.
+struct SeededWedge {
+  std::vector<Point2> sites;
+  detail::SiteDelaunay::Seed seed;
+};
+
+SeededWedge seeded_wedge() {
+  Domain d = test::wedge_with_hole();
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int k = 0; k < 400; ++k) {
+    // Uniform in the 40-degree wedge of radius 4, outside the square hole.
+    const double r = 4 * std::sqrt(u(rng)) * 0.98, a = 0.698131700797732 * (0.01 + 0.98 * u(rng));
+    const Point2 p(r * std::cos(a), r * std::sin(a));
+    if (p.x() > 2.35 && p.x() < 2.85 && p.y() > 0.45 && p.y() < 0.95) continue;
+    d.points.push_back(p);
+  }
+  const Mesh mesh = build_cdt(d);
+  SeededWedge w;
+  for (auto vh : mesh.vertices()) w.sites.push_back(point2(mesh, vh));
+  for (auto fh : mesh.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (auto h : mesh.fh_range(fh)) {
+      t[static_cast<std::size_t>(k++)] = mesh.from_vertex_handle(h).idx();
+      if (mesh.is_boundary(mesh.opposite_halfedge_handle(h))) w.seed.border.push_back({mesh.from_vertex_handle(h).idx(), mesh.to_vertex_handle(h).idx()});
+    }
+    w.seed.triangles.push_back(t);
+  }
+  return w;
+}
+
+// A mesh region (here a whole domain with a hole and a concave corner) seeds the triangulation:
+// its border is triangulated out to the frame and the whole flipped Delaunay, the same
+// triangulation as one built from scratch (as many triangles, every edge locally Delaunay).
+TEST(SiteDelaunay, a_constrained_mesh_seeds_the_delaunay_triangulation_of_its_vertices) {
+  const SeededWedge w = seeded_wedge();
+  detail::SiteDelaunay seeded, scratch;
+  seeded.update(w.sites, false, &w.seed);
+  scratch.update(w.sites, false);
+  EXPECT_EQ(seeded.seeded_builds(), 1u);
+  EXPECT_EQ(scratch.seeded_builds(), 0u);
+  expect_locally_delaunay_triangulation(seeded, w.sites);
+  EXPECT_EQ(seeded.triangles().size(), scratch.triangles().size());
+}
+
+// A seed that is no region's border (an edge missing, a triangle missing, an edge crossing
+// others) is refused: the triangulation is built from scratch, as Delaunay as ever.
+TEST(SiteDelaunay, an_inconsistent_seed_falls_back_to_a_build_from_scratch) {
+  for (int defect = 0; defect < 3; ++defect) {
+    SeededWedge w = seeded_wedge();
+    if (defect == 0) w.seed.border.pop_back();
+    if (defect == 1) w.seed.triangles.pop_back();
+    if (defect == 2) w.seed.border.push_back({w.seed.border.front()[0], w.seed.border[w.seed.border.size() / 2][0]});
+    detail::SiteDelaunay dt;
+    dt.update(w.sites, false, &w.seed);
+    EXPECT_EQ(dt.seeded_builds(), 0u) << "defect " << defect;
+    EXPECT_EQ(dt.rebuilds(), 1u);
+    expect_locally_delaunay_triangulation(dt, w.sites);
+  }
 }
 
 }  // namespace

@@ -35,6 +35,7 @@ class NestedLattice {
     int level;
   };
   Point2 at(const Key& k) const;
+  void sort_unique_keys();
 
   const SizeField& field_;
   Point2 origin_;
@@ -42,6 +43,8 @@ class NestedLattice {
   int top_ = 0;      ///< the coarsest level
   std::vector<Cell> stack_;
   std::vector<Key> keys_;
+  std::vector<std::uint64_t> packed_, scratch_;  ///< radix sort buffers
+  std::vector<std::size_t> counts_;
 };
 
 }  // namespace acute::detail

@@ -4,11 +4,14 @@
 #include <acute/delaunay/cdt.h>
 #include <acute/predicates/predicates.h>
 
+#include "delaunay/triangulation.h"
+
 #include <algorithm>
+#include <cstdint>
 
 namespace acute::detail {
 
-void SiteDelaunay::update(const std::vector<Point2>& points, bool same_sites) {
+void SiteDelaunay::update(const std::vector<Point2>& points, bool same_sites, const Seed* seed) {
   const bool repairable = same_sites && points.size() == n_sites_ && !tri_.empty();
   n_sites_ = points.size();
   if (repairable) {
@@ -23,6 +26,10 @@ void SiteDelaunay::update(const std::vector<Point2>& points, bool same_sites) {
     for (const Point2& corner : {Point2(-r, -r), Point2(r, -r), Point2(r, r), Point2(-r, r)}) points_.push_back(c + corner);
   }
   if (repairable && all_counter_clockwise()) {
+    lawson();
+  } else if (!repairable && seed && build_from_seed(*seed)) {
+    ++rebuilds_;
+    ++seeded_;
     lawson();
   } else {
     rebuild();
@@ -41,6 +48,113 @@ bool SiteDelaunay::all_counter_clockwise() const {
 void SiteDelaunay::rebuild() {
   ++rebuilds_;
   tri_ = delaunay_triangles(points_);
+  link_neighbours();
+}
+
+bool SiteDelaunay::build_from_seed(const Seed& seed) {
+  const auto n = static_cast<int>(n_sites_);
+  // The border's points and the frame, triangulated with the border as constraints.
+  border_local_.assign(n_sites_, -1);
+  std::vector<Point2> pts;
+  std::vector<int> site_of;
+  for (const auto& e : seed.border)
+    for (int v : e) {
+      if (v < 0 || v >= n) return false;
+      int& l = border_local_[static_cast<std::size_t>(v)];
+      if (l >= 0) continue;
+      l = static_cast<int>(pts.size());
+      pts.push_back(points_[static_cast<std::size_t>(v)]);
+      site_of.push_back(v);
+    }
+  for (int k = 0; k < 4; ++k) {
+    pts.push_back(points_[n_sites_ + static_cast<std::size_t>(k)]);
+    site_of.push_back(n + k);
+  }
+  Triangulation tr(pts);
+  if (!tr.insert_points(brio_hilbert_order(pts))) return false;
+  for (int i = 0; i < tr.num_vertices(); ++i)
+    if (tr.rep(i) != i) return false;
+  std::vector<std::uint64_t> inside_edges;
+  inside_edges.reserve(seed.border.size());
+  auto key = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
+  try {
+    for (const auto& e : seed.border) {
+      const int a = border_local_[static_cast<std::size_t>(e[0])], b = border_local_[static_cast<std::size_t>(e[1])];
+      if (a == b) return false;
+      tr.insert_segment(a, b, 0);
+      inside_edges.push_back(key(a, b));
+    }
+  } catch (const InvalidInput&) {
+    return false;  // border edges that cross: not a region's border
+  }
+  if (tr.points_on_segments > 0) return false;
+  std::sort(inside_edges.begin(), inside_edges.end());
+  // Each triangle is inside the part (on the left of a border edge) or outside it (the frame's ring
+  // and the part's holes): floods from both kinds of border triangles across unconstrained edges
+  // must label every triangle, and never one twice.
+  std::vector<signed char> label(static_cast<std::size_t>(tr.num_slots()), 0);
+  std::vector<int> stack;
+  for (int t = 0; t < tr.num_slots(); ++t) {
+    if (!tr.alive(t)) continue;
+    signed char want = tr.is_ghost(t) ? 2 : 0;
+    for (int i = 0; i < 3 && !tr.is_ghost(t); ++i) {
+      if (tr.segment(t, i) < 0) continue;
+      const auto& v = tr.tri(t).v;
+      const signed char side = std::binary_search(inside_edges.begin(), inside_edges.end(), key(v[(i + 1) % 3], v[(i + 2) % 3])) ? 1 : 2;
+      if (want != 0 && want != side) return false;
+      want = side;
+    }
+    if (want == 0) continue;
+    if (label[static_cast<std::size_t>(t)] != 0 && label[static_cast<std::size_t>(t)] != want) return false;
+    if (label[static_cast<std::size_t>(t)] == want) continue;
+    label[static_cast<std::size_t>(t)] = want;
+    stack.push_back(t);
+    while (!stack.empty()) {
+      const int u = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        if (tr.segment(u, i) >= 0) continue;
+        const int w = tr.tri(u).n[i];
+        if (w < 0) continue;
+        signed char& lw = label[static_cast<std::size_t>(w)];
+        if (lw == want) continue;
+        if (lw != 0) return false;
+        lw = want;
+        stack.push_back(w);
+      }
+    }
+  }
+  tri_ = seed.triangles;
+  for (int t = 0; t < tr.num_slots(); ++t) {
+    if (!tr.alive(t) || tr.is_ghost(t)) continue;
+    if (label[static_cast<std::size_t>(t)] == 0) return false;
+    if (label[static_cast<std::size_t>(t)] == 2) {
+      const auto& v = tr.tri(t).v;
+      tri_.push_back({site_of[static_cast<std::size_t>(v[0])], site_of[static_cast<std::size_t>(v[1])], site_of[static_cast<std::size_t>(v[2])]});
+    }
+  }
+  // A triangulation of the frame's square by counter-clockwise triangles, each edge shared by two
+  // of them but the square's four, over every site: 2 V - 6 triangles (Euler, four hull vertices).
+  if (tri_.size() != 2 * points_.size() - 6) return false;
+  for (const auto& t : tri_)
+    for (int v : t)
+      if (v < 0 || static_cast<std::size_t>(v) >= points_.size()) return false;
+  if (!all_counter_clockwise()) return false;
+  link_neighbours();
+  std::size_t open = 0;
+  for (std::size_t t = 0; t < tri_.size(); ++t)
+    for (int u : nbr_[t]) {
+      if (u < 0) {
+        ++open;
+        continue;
+      }
+      const auto& back = nbr_[static_cast<std::size_t>(u)];
+      if (back[0] != static_cast<int>(t) && back[1] != static_cast<int>(t) && back[2] != static_cast<int>(t)) return false;  // an edge of three triangles
+    }
+  return open == 4;
+}
+
+void SiteDelaunay::link_neighbours() {
   const std::size_t n = points_.size();
   // Triangles around each vertex (CSR), then each edge's twin among the triangles of its head.
   incident_start_.assign(n + 1, 0);

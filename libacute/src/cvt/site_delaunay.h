@@ -16,6 +16,16 @@ namespace acute::detail {
 
 class SiteDelaunay {
  public:
+  /// A triangulation the caller has already of part of the sites' hull (a mesh region): its
+  /// triangles (counter-clockwise, in site ids) and its border (directed edges with the part on
+  /// their left). The rest, up to the frame, is small (the border's constrained triangulation), and
+  /// Lawson flips make the whole Delaunay: linear where the part is nearly Delaunay already, as a
+  /// constrained Delaunay mesh is away from its constraints.
+  struct Seed {
+    std::vector<std::array<int, 3>> triangles;
+    std::vector<std::array<int, 2>> border;
+  };
+
   /// Makes this the Delaunay triangulation of `points` and a frame of four far points around them
   /// (ids points.size() .. + 3): with the frame, nearly collinear sites on a straight boundary
   /// segment (collinear but for rounding) make no sliver on the hull, which their sliding along
@@ -23,7 +33,9 @@ class SiteDelaunay {
   /// points (same identities: `same_sites`) and every triangle is still counter-clockwise at the
   /// new positions, it is repaired by Lawson flips (exact incircle), which is linear for small
   /// moves; otherwise it is rebuilt from scratch.
-  void update(const std::vector<Point2>& points, bool same_sites);
+  /// Without a repairable previous triangulation, a `seed` (when given and consistent with the
+  /// points) replaces the build from scratch.
+  void update(const std::vector<Point2>& points, bool same_sites, const Seed* seed = nullptr);
 
   /// The Delaunay neighbours of site i (every site sharing an edge with it; never the frame).
   std::pair<const int*, const int*> neighbours(int i) const {
@@ -42,9 +54,12 @@ class SiteDelaunay {
 
   std::size_t rebuilds() const { return rebuilds_; }
   std::size_t flips() const { return flips_; }
+  std::size_t seeded_builds() const { return seeded_; }  ///< of the rebuilds, those from a seed
 
  private:
   void rebuild();
+  bool build_from_seed(const Seed& seed);
+  void link_neighbours();
   bool all_counter_clockwise() const;
   void lawson();
   void flip(int t, int i);
@@ -58,7 +73,8 @@ class SiteDelaunay {
   std::vector<int> vertex_tri_;
   std::vector<int> incident_start_, incident_;  ///< rebuild scratch: triangles around each vertex
   std::vector<std::pair<int, int>> stack_;      ///< (triangle, edge) to check
-  std::size_t rebuilds_ = 0, flips_ = 0;
+  std::vector<int> border_local_;               ///< seed scratch: site -> border point, or -1
+  std::size_t rebuilds_ = 0, flips_ = 0, seeded_ = 0;
 };
 
 }  // namespace acute::detail

@@ -5,6 +5,7 @@
 #include <acute/mesh/geometry.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <cmath>
 #include <limits>
@@ -23,6 +24,7 @@ struct CellScratch {
   /// renumber faces and so the order regions are found in.
   std::map<std::pair<int, int>, RegionDelaunay> regions;
   RegionDelaunay local;                 ///< local mode (rebuilt every call)
+  SiteDelaunay::Seed seed;              ///< a region's faces, to start its sites' triangulation
   SiteDelaunay* delaunay = nullptr;     ///< the current region's
   std::size_t rebuilds = 0, flips = 0;  ///< over every region so far
   std::vector<int> face_region;          ///< per face: region id, -1 not reached
@@ -290,7 +292,29 @@ void region_cells(const Mesh& mesh, const SizeField& field, CellIntegrals& out, 
   }
   RegionDelaunay& rd = persistent ? s.regions[{s.site_vertex.front(), s.site_vertex.back()}] : s.local;
   const std::size_t r0 = rd.delaunay.rebuilds(), f0 = rd.delaunay.flips();
-  rd.delaunay.update(s.points, persistent && s.site_vertex == rd.previous_sites);
+  const bool same_sites = persistent && s.site_vertex == rd.previous_sites;
+  detail::SiteDelaunay::Seed* seed = nullptr;
+  if (persistent && !same_sites) {
+    // The region's own faces seed the sites' triangulation: it only has to be completed beyond
+    // the region's border and flipped Delaunay near its constraints.
+    seed = &s.seed;
+    seed->triangles.clear();
+    seed->border.clear();
+    const int region = s.face_region[static_cast<std::size_t>(site_faces.front())];
+    for (int f : site_faces) {
+      std::array<int, 3> t{};
+      int k = 0;
+      for (auto h : mesh.fh_range(FaceHandle(f))) {
+        const int from = s.vertex_site[static_cast<std::size_t>(mesh.from_vertex_handle(h).idx())];
+        t[static_cast<std::size_t>(k++)] = from;
+        const int g = mesh.face_handle(mesh.opposite_halfedge_handle(h)).idx();
+        if (g < 0 || s.face_region[static_cast<std::size_t>(g)] != region)
+          seed->border.push_back({from, s.vertex_site[static_cast<std::size_t>(mesh.to_vertex_handle(h).idx())]});
+      }
+      seed->triangles.push_back(t);
+    }
+  }
+  rd.delaunay.update(s.points, same_sites, seed);
   s.rebuilds += rd.delaunay.rebuilds() - r0;
   s.flips += rd.delaunay.flips() - f0;
   if (persistent) rd.previous_sites = s.site_vertex;

@@ -184,16 +184,29 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
   // Faces in the order of their smallest vertex (each from that corner): with spatially ordered
   // points the faces, edges and half-edges then lie in memory as the vertices do, which the
   // whole-mesh sweeps of the optimiser and the repair walk coherently.
-  std::vector<std::pair<std::array<int, 3>, int>> order;  // (rotated corners, slot)
-  order.reserve(nf);
-  for (int t = 0; t < slots; ++t) {
-    if (!tr.alive(t) || removed[static_cast<std::size_t>(t)]) continue;
-    const auto& tv = tr.tri(t).v;
-    const int m[3] = {vmap[static_cast<std::size_t>(tv[0])], vmap[static_cast<std::size_t>(tv[1])], vmap[static_cast<std::size_t>(tv[2])]};
-    const int r = m[0] < m[1] ? (m[0] < m[2] ? 0 : 2) : (m[1] < m[2] ? 1 : 2);
-    order.push_back({{m[r], m[(r + 1) % 3], m[(r + 2) % 3]}, t});
+  // A counting sort by the smallest corner, then the few faces of each corner by their other two
+  // (the order of a lexicographic sort, at a fraction of its cost for a million faces).
+  std::vector<std::pair<std::array<int, 3>, int>> order(nf);  // (rotated corners, slot)
+  {
+    std::vector<int> start(used + 1, 0);
+    auto rotated = [&](int t) {
+      const auto& tv = tr.tri(t).v;
+      const int m[3] = {vmap[static_cast<std::size_t>(tv[0])], vmap[static_cast<std::size_t>(tv[1])], vmap[static_cast<std::size_t>(tv[2])]};
+      const int r = m[0] < m[1] ? (m[0] < m[2] ? 0 : 2) : (m[1] < m[2] ? 1 : 2);
+      return std::array<int, 3>{m[r], m[(r + 1) % 3], m[(r + 2) % 3]};
+    };
+    for (int t = 0; t < slots; ++t)
+      if (tr.alive(t) && !removed[static_cast<std::size_t>(t)]) ++start[static_cast<std::size_t>(rotated(t)[0]) + 1];
+    for (std::size_t v = 0; v < used; ++v) start[v + 1] += start[v];
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (int t = 0; t < slots; ++t) {
+      if (!tr.alive(t) || removed[static_cast<std::size_t>(t)]) continue;
+      const std::array<int, 3> c = rotated(t);
+      order[static_cast<std::size_t>(fill[static_cast<std::size_t>(c[0])]++)] = {c, t};
+    }
+    for (std::size_t v = 0; v < used; ++v)
+      std::sort(order.begin() + start[v], order.begin() + start[v + 1]);
   }
-  std::sort(order.begin(), order.end());
   std::vector<char> present(domain.segments.size(), 0);
   for (const auto& [corners, t] : order) {
     const auto& tv = tr.tri(t).v;

@@ -330,36 +330,40 @@ std::size_t count_faces(const Mesh& mesh) {
 
 void write_off(const Mesh& mesh, const std::string& path) {
   detail::AtomicFile file(path);
-  std::ostream& out = file.stream();
-  std::size_t nv = 0;
-  const auto number = dense_vertex_numbers(mesh, nv);
-  out << "OFF\n" << nv << ' ' << count_faces(mesh) << " 0\n";
-  for (auto vh : mesh.vertices()) {
-    const auto& p = mesh.point(vh);
-    out << detail::format_double(p[0]) << ' ' << detail::format_double(p[1]) << " 0\n";
-  }
-  for (auto fh : mesh.faces()) {
-    out << '3';
-    for (auto fv : mesh.fv_range(fh)) out << ' ' << number[fv.idx()];
-    out << '\n';
+  {
+    detail::TextBlock out(file.stream());
+    std::size_t nv = 0;
+    const auto number = dense_vertex_numbers(mesh, nv);
+    out << "OFF\n" << nv << ' ' << count_faces(mesh) << " 0\n";
+    for (auto vh : mesh.vertices()) {
+      const auto& p = mesh.point(vh);
+      out << p[0] << ' ' << p[1] << " 0\n";
+    }
+    for (auto fh : mesh.faces()) {
+      out << '3';
+      for (auto fv : mesh.fv_range(fh)) out << ' ' << number[fv.idx()];
+      out << '\n';
+    }
   }
   file.commit();
 }
 
 void write_obj(const Mesh& mesh, const std::string& path) {
   detail::AtomicFile file(path);
-  std::ostream& out = file.stream();
-  std::size_t nv = 0;
-  const auto number = dense_vertex_numbers(mesh, nv);
-  out << "# libacute mesh: " << nv << " vertices, " << count_faces(mesh) << " triangles\n";
-  for (auto vh : mesh.vertices()) {
-    const auto& p = mesh.point(vh);
-    out << "v " << detail::format_double(p[0]) << ' ' << detail::format_double(p[1]) << " 0\n";
-  }
-  for (auto fh : mesh.faces()) {
-    out << 'f';
-    for (auto fv : mesh.fv_range(fh)) out << ' ' << number[fv.idx()] + 1;
-    out << '\n';
+  {
+    detail::TextBlock out(file.stream());
+    std::size_t nv = 0;
+    const auto number = dense_vertex_numbers(mesh, nv);
+    out << "# libacute mesh: " << nv << " vertices, " << count_faces(mesh) << " triangles\n";
+    for (auto vh : mesh.vertices()) {
+      const auto& p = mesh.point(vh);
+      out << "v " << p[0] << ' ' << p[1] << " 0\n";
+    }
+    for (auto fh : mesh.faces()) {
+      out << 'f';
+      for (auto fv : mesh.fv_range(fh)) out << ' ' << number[fv.idx()] + 1;
+      out << '\n';
+    }
   }
   file.commit();
 }
@@ -367,20 +371,23 @@ void write_obj(const Mesh& mesh, const std::string& path) {
 void write_node_ele(const Mesh& mesh, const std::string& path) {
   detail::AtomicFile node(detail::with_extension(path, ".node"));
   detail::AtomicFile ele(detail::with_extension(path, ".ele"));
-  std::size_t nv = 0;
-  const auto number = dense_vertex_numbers(mesh, nv);
-  node.stream() << nv << " 2 0 1\n";
-  for (auto vh : mesh.vertices()) {
-    const auto& p = mesh.point(vh);
-    node.stream() << number[vh.idx()] + 1 << ' ' << detail::format_double(p[0]) << ' ' << detail::format_double(p[1])
-                  << ' ' << mesh.data(vh).marker << '\n';
-  }
-  ele.stream() << count_faces(mesh) << " 3 0\n";
-  std::size_t f = 0;
-  for (auto fh : mesh.faces()) {
-    ele.stream() << ++f;
-    for (auto fv : mesh.fv_range(fh)) ele.stream() << ' ' << number[fv.idx()] + 1;
-    ele.stream() << '\n';
+  {
+    std::size_t nv = 0;
+    const auto number = dense_vertex_numbers(mesh, nv);
+    detail::TextBlock out(node.stream());
+    out << nv << " 2 0 1\n";
+    for (auto vh : mesh.vertices()) {
+      const auto& p = mesh.point(vh);
+      out << number[vh.idx()] + 1 << ' ' << p[0] << ' ' << p[1] << ' ' << mesh.data(vh).marker << '\n';
+    }
+    detail::TextBlock elements(ele.stream());
+    elements << count_faces(mesh) << " 3 0\n";
+    std::size_t f = 0;
+    for (auto fh : mesh.faces()) {
+      elements << ++f;
+      for (auto fv : mesh.fv_range(fh)) elements << ' ' << number[fv.idx()] + 1;
+      elements << '\n';
+    }
   }
   node.commit();
   ele.commit();

@@ -103,6 +103,27 @@ std::string format_double(double x) {
   return std::string(buf, ptr);
 }
 
+TextBlock& TextBlock::operator<<(long long v) {
+  char buf[24];
+  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  (void)ec;
+  text_.append(buf, ptr);
+  return spill();
+}
+
+TextBlock& TextBlock::operator<<(double v) {
+  char buf[64];
+  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, std::numeric_limits<double>::max_digits10);
+  (void)ec;
+  text_.append(buf, ptr);
+  return spill();
+}
+
+void TextBlock::flush() {
+  out_.write(text_.data(), static_cast<std::streamsize>(text_.size()));
+  text_.clear();
+}
+
 std::string extension_of(const std::string& path) {
   const auto slash = path.find_last_of('/');
   const auto dot = path.find_last_of('.');

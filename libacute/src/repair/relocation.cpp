@@ -3,6 +3,7 @@
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/segments.h>
 #include <acute/ops/relocate.h>
+#include <acute/predicates/predicates.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,101 @@ bool face_exempt(const Mesh& mesh, HalfedgeHandle heh, const std::vector<bool>& 
     if (h == end) return false;
   }
 }
+
+/// The star of a vertex as the pattern search sees it. Only the vertex moves, so each face, its
+/// other two corners, their positions and whether a corner is forced are read from the mesh once;
+/// an evaluation then walks plain arrays. Values and verdicts are those of star_energy,
+/// star_margin and can_relocate, term for term in the same order.
+class CachedStar {
+ public:
+  static constexpr int kMaxFaces = 32;
+
+  /// False when the star has more faces than the cache holds (the caller uses the mesh then).
+  bool load(const Mesh& mesh, VertexHandle vh, const std::vector<bool>& forced) {
+    auto is_forced = [&](VertexHandle v) {
+      const auto i = static_cast<std::size_t>(v.idx());
+      return i < forced.size() && forced[i];
+    };
+    vh_ = vh;
+    n_ = 0;
+    open_border_ = false;
+    forced0_ = is_forced(vh);
+    const bool on_segment = mesh.data(vh).kind == VertexKind::OnSegment;
+    for (auto heh : mesh.voh_range(vh)) {
+      if (mesh.is_boundary(heh)) {
+        open_border_ = open_border_ || !on_segment;
+        continue;
+      }
+      if (n_ == kMaxFaces) return false;
+      Face& f = faces_[n_++];
+      f.fh = mesh.face_handle(heh);
+      f.v1 = mesh.to_vertex_handle(heh);
+      f.v2 = mesh.to_vertex_handle(mesh.next_halfedge_handle(heh));
+      f.p1 = point2(mesh, f.v1);
+      f.p2 = point2(mesh, f.v2);
+      f.forced1 = is_forced(f.v1);
+      f.forced2 = is_forced(f.v2);
+    }
+    return true;
+  }
+
+  /// star_energy with the vertex at p (where the mesh has it too: forced corners read their sector).
+  double energy(const Mesh& mesh, const Point2& p, const AngleBounds& bounds, const std::vector<bool>& forced) const {
+    constexpr double kTau = 2.0;
+    double energy = 0;
+    for (int i = 0; i < n_; ++i) {
+      const Face& f = faces_[i];
+      const double angles[3] = {approx_angle_deg(p, f.p1, f.p2), approx_angle_deg(f.p1, f.p2, p), approx_angle_deg(f.p2, p, f.p1)};
+      const bool forced_corner[3] = {forced0_, f.forced1, f.forced2};
+      const VertexHandle corner[3] = {vh_, f.v1, f.v2};
+      for (int k = 0; k < 3; ++k) {
+        double m = bounds.max_deg - angles[k];
+        if (!(forced_corner[k] && min_exempt_corner(mesh, corner[k], f.fh, bounds.min_deg, forced))) m = std::min(m, angles[k] - bounds.min_deg);
+        energy += std::exp(-m / kTau);
+      }
+    }
+    return energy;
+  }
+
+  /// star_margin at the mesh's position of the vertex.
+  double margin(const Mesh& mesh, const AngleBounds& bounds) const {
+    double margin = INFINITY;
+    for (int i = 0; i < n_; ++i) {
+      const Face& f = faces_[i];
+      margin = std::min(margin, triangle_margin(mesh, f.fh, bounds, forced0_ || f.forced1 || f.forced2));
+    }
+    return margin;
+  }
+
+  /// can_relocate(mesh, vh, p) == OpVerdict::Ok.
+  bool can_move_to(const Mesh& mesh, const Point2& p) const {
+    const auto& data = mesh.data(vh_);
+    if (data.kind == VertexKind::Input || open_border_) return false;
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y())) return false;
+    if (data.kind == VertexKind::OnSegment) {
+      if (!keeps_segment_order(mesh, vh_, p)) return false;
+      if (data.segment >= 0 && static_cast<std::size_t>(data.segment) < segment_table(mesh).size() &&
+          !close_enough_to_line(segment_endpoints(mesh, data.segment), p))
+        return false;
+    }
+    for (int i = 0; i < n_; ++i)
+      if (predicates::orient2d(p, faces_[i].p1, faces_[i].p2) != Sign::Positive) return false;
+    return true;
+  }
+
+ private:
+  struct Face {
+    FaceHandle fh;
+    VertexHandle v1, v2;
+    Point2 p1, p2;
+    bool forced1, forced2;
+  };
+  VertexHandle vh_;
+  int n_ = 0;
+  bool forced0_ = false;
+  bool open_border_ = false;  ///< a border spoke at a vertex on no segment: can_relocate refuses it
+  Face faces_[kMaxFaces];
+};
 
 }  // namespace
 
@@ -88,16 +184,18 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   }
   auto place = [&](const Point2& p) { return on_segment ? project_on_line(ends, p) : p; };
 
-  const double base = star_energy(mesh, vh, bounds, forced);
+  CachedStar star;
+  const bool cached = star.load(mesh, vh, forced);
+  const double base = cached ? star.energy(mesh, start, bounds, forced) : star_energy(mesh, vh, bounds, forced);
   double best = base;
   Point2 best_p = start;
   // Evaluates a candidate (exactly valid stars only) and keeps it when better.
   auto consider = [&](const Point2& q) {
     const Point2 p = place(q);
-    if (p == best_p || can_relocate(mesh, vh, p) != OpVerdict::Ok) return false;
+    if (p == best_p || !(cached ? star.can_move_to(mesh, p) : can_relocate(mesh, vh, p) == OpVerdict::Ok)) return false;
     set_point2(mesh, vh, p);
-    const double m = star_energy(mesh, vh, bounds, forced);
-    const bool better = m < best * (1 - 1e-12) && (!keep_good || star_margin(mesh, vh, bounds, forced) >= 0);
+    const double m = cached ? star.energy(mesh, p, bounds, forced) : star_energy(mesh, vh, bounds, forced);
+    const bool better = m < best * (1 - 1e-12) && (!keep_good || (cached ? star.margin(mesh, bounds) : star_margin(mesh, vh, bounds, forced)) >= 0);
     set_point2(mesh, vh, best_p);
     if (better) {
       best = m;
