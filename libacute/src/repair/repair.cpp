@@ -108,7 +108,8 @@ class Repairer {
     }
     if (!current_is_best && best.n_faces() > 0) mesh_ = std::move(best);
     collect_garbage(mesh_);
-    result_.bad_after = bad_triangles(mesh_, bounds_).size();
+    // Converged: the last scan found nothing bad, and compaction moves no vertex.
+    result_.bad_after = result_.status == RepairStatus::Converged ? 0 : bad_triangles(mesh_, bounds_).size();
     return result_;
   }
 
