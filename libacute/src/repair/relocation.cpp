@@ -6,6 +6,7 @@
 #include <acute/predicates/predicates.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace acute {
@@ -39,7 +40,19 @@ class CachedStar {
     n_ = 0;
     open_border_ = false;
     forced0_ = is_forced(vh);
-    const bool on_segment = mesh.data(vh).kind == VertexKind::OnSegment;
+    const auto& data = mesh.data(vh);
+    const bool on_segment = data.kind == VertexKind::OnSegment;
+    // keeps_segment_order's neighbours along the segment, and the segment's line.
+    n_along_ = 0;
+    has_line_ = false;
+    if (on_segment) {
+      for (auto heh : mesh.voh_range(vh))
+        if (mesh.data(mesh.edge_handle(heh)).segment == data.segment && n_along_ < 2) along_[n_along_++] = point2(mesh, mesh.to_vertex_handle(heh));
+      if (data.segment >= 0 && static_cast<std::size_t>(data.segment) < segment_table(mesh).size()) {
+        has_line_ = true;
+        line_ = segment_endpoints(mesh, data.segment);
+      }
+    }
     for (auto heh : mesh.voh_range(vh)) {
       if (mesh.is_boundary(heh)) {
         open_border_ = open_border_ || !on_segment;
@@ -92,10 +105,13 @@ class CachedStar {
     if (data.kind == VertexKind::Input || open_border_) return false;
     if (!std::isfinite(p.x()) || !std::isfinite(p.y())) return false;
     if (data.kind == VertexKind::OnSegment) {
-      if (!keeps_segment_order(mesh, vh_, p)) return false;
-      if (data.segment >= 0 && static_cast<std::size_t>(data.segment) < segment_table(mesh).size() &&
-          !close_enough_to_line(segment_endpoints(mesh, data.segment), p))
-        return false;
+      // keeps_segment_order: strictly between the neighbours where they differ, equal where they agree.
+      if (n_along_ < 2) return false;
+      for (int i = 0; i < 2; ++i) {
+        const double lo = std::min(along_[0][i], along_[1][i]), hi = std::max(along_[0][i], along_[1][i]);
+        if (lo == hi ? p[i] != lo : !(lo < p[i] && p[i] < hi)) return false;
+      }
+      if (has_line_ && !close_enough_to_line(line_, p)) return false;
     }
     for (int i = 0; i < n_; ++i)
       if (predicates::orient2d(p, faces_[i].p1, faces_[i].p2) != Sign::Positive) return false;
@@ -113,6 +129,10 @@ class CachedStar {
   int n_ = 0;
   bool forced0_ = false;
   bool open_border_ = false;  ///< a border spoke at a vertex on no segment: can_relocate refuses it
+  int n_along_ = 0;           ///< neighbours along the vertex's segment (up to two)
+  Point2 along_[2];
+  bool has_line_ = false;
+  std::array<Point2, 2> line_{};
   Face faces_[kMaxFaces];
 };
 
