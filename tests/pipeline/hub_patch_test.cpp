@@ -90,6 +90,26 @@ TEST(HubPatch, the_patched_start_is_valid_conforming_and_acute_around_the_hub) {
   }
 }
 
+// On a fine start the log-polar mesh's outer triangles (at least twice the narrowest strip, in the
+// log domain) would be many times the spacing around the disk: the disk shrinks instead, and its
+// seam leaves the repair few bad triangles (the full-size disk left hundreds on clusters.poly at
+// 200k vertices, 16 times coarser than the mesh around it).
+TEST(HubPatch, a_patch_on_a_fine_start_shrinks_to_the_spacing_around_it) {
+  // Strips of 8 and 12 degrees: the log-polar mesh's floor, twice the narrowest strip, is 0.28.
+  Domain d;
+  d.points = {Point2(-10, -10), Point2(10, -10), Point2(10, 10), Point2(-10, 10), Point2(0, 0), polar(8, 0), polar(8, 12), polar(6, -8)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {4, 6}, {4, 7}};
+  Mesh mesh = test::cvt_mesh(d, 12000);
+  const int bad_before = bad_within(mesh, 1e9, 182);
+  const std::vector<Point2> hubs = detail::patch_strip_hubs(mesh, MeshOptions{}, 0);
+  ASSERT_EQ(hubs.size(), 1u);
+  EXPECT_EQ(test::verify_valid(mesh), "");
+  // The disk's own bad triangles go with it; what the seam adds stays within the start's count
+  // (37 before, 52 after; the full-size disk, its outer triangles 3.6 times the spacing, left 115).
+  const int bad_after = bad_within(mesh, 1e9, 182);
+  EXPECT_LE(bad_after, 2 * bad_before) << bad_before << " bad triangles before the patch, " << bad_after << " after";
+}
+
 TEST(HubPatch, domains_without_a_strip_beside_a_wide_sector_are_left_alone) {
   // A plain sharp wedge (one sector), and two 40-degree sectors between segments: no strip hub.
   for (const Domain& d : {test::sharp_wedge(12), test::wedge_between_segments(40)}) {

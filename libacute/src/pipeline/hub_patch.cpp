@@ -33,6 +33,8 @@ constexpr double kHeadDepth = 0.6;
 constexpr double kFeatureShare = 0.6, kWallShare = 0.6;
 /// Largest triangle of the log-polar mesh (radians): the exp map bends a chord of angle a by a / 2.
 constexpr double kMaxLogSize = 0.35;
+/// The patch's outer triangles at most this many times the mesh's spacing around it.
+constexpr double kMaxSeamRatio = 2.0;
 /// At most this many hubs are patched (each costs a copy of the mesh).
 constexpr int kMaxHubs = 16;
 
@@ -227,8 +229,23 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
   }
   std::vector<Point2> patched;
   const std::size_t vertices_before = mesh.n_vertices();
-  for (const HubPlan& plan : plans) {
-    const double spacing = spacing_around(mesh, plan.hub, plan.radius);
+  for (HubPlan& plan : plans) {
+    double spacing = spacing_around(mesh, plan.hub, plan.radius);
+    if (!(spacing > 0)) continue;
+    // The log-polar mesh's triangles at its outer side are at least floor_size (in the log
+    // domain) across, r floor_size physically: on a fine mesh that is many times its spacing there,
+    // and the seam then leaves hundreds of bad triangles for the repair to grind through (clusters
+    // at 200k vertices: 16 times, 18 slow repair iterations). The disk shrinks until its outer
+    // triangles are at most kMaxSeamRatio times the spacing around it (its strips are then as wide
+    // as the mesh's triangles there, which the size field resolves).
+    const double floor_size = std::min(2 * plan.narrowest, kMaxLogSize);
+    for (int k = 0; k < 3; ++k) {
+      const double outer = std::clamp(spacing / plan.radius, floor_size, kMaxLogSize);
+      if (outer * plan.radius <= kMaxSeamRatio * spacing) break;
+      plan.radius = kMaxSeamRatio * spacing / outer;
+      spacing = spacing_around(mesh, plan.hub, plan.radius);
+      if (!(spacing > 0)) break;
+    }
     if (!(spacing > 0)) continue;
     // The log-polar domain: x = ln(r / r_inner), y = phi. The walls are its horizontal segments
     // from the inner side x = 0 (the apex triangles' bases) to x = kLogDepth (the patch's radius);
@@ -264,7 +281,7 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
     // The physical size r h(x) at most the mesh's spacing around the disk: h <= (spacing / R) e^(kLogDepth - x),
     // so the patch grades toward the hub only where its strips need it (a uniform spacing / R tripled
     // the vertices of la's disks). Never below twice the narrowest strip, never above kMaxLogSize.
-    const double outer_size = spacing / plan.radius, floor_size = std::min(2 * plan.narrowest, kMaxLogSize);
+    const double outer_size = spacing / plan.radius;
     lo.max_size = kMaxLogSize;
     lo.size_cap = [outer_size, floor_size](const Point2& q) { return std::clamp(outer_size * std::exp(kLogDepth - q.x()), floor_size, kMaxLogSize); };
     const double share = seconds > 0 ? seconds / static_cast<double>(plans.size()) : 0;
