@@ -76,14 +76,17 @@ NestedLattice::NestedLattice(const SizeField& field, const Point2& lo, const Poi
 void NestedLattice::sort_unique_keys() {
   // Every lattice point comes once per leaf triangle around it (up to six times): sorted and
   // deduplicated in lexicographic order. Where the keys span less than 2^32 in each coordinate
-  // (always but for absurd gradings), as packed 64-bit words by a radix sort, 16 bits a pass,
-  // skipping the passes whose digit never varies: several times faster than std::sort.
+  // (always but for absurd gradings), many keys go as packed 64-bit words through a radix sort,
+  // 16 bits a pass, skipping the passes whose digit never varies: several times faster than std::sort.
   if (keys_.empty()) return;
   Key lo = keys_.front(), hi = lo;
   for (const Key& k : keys_)
     for (int c = 0; c < 2; ++c) lo[c] = std::min(lo[c], k[c]), hi[c] = std::max(hi[c], k[c]);
   constexpr std::int64_t kSpan = std::int64_t{1} << 32;
-  if (hi[0] - lo[0] >= kSpan || hi[1] - lo[1] >= kSpan) {
+  // Each radix pass clears and sums 2^16 counters: worth it for large triangles only (a domain's
+  // CDT has thousands of small ones, each with a handful of keys).
+  constexpr std::size_t kRadixFrom = std::size_t{1} << 15;
+  if (keys_.size() < kRadixFrom || hi[0] - lo[0] >= kSpan || hi[1] - lo[1] >= kSpan) {
     std::sort(keys_.begin(), keys_.end());
     keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
     return;
