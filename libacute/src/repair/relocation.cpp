@@ -13,31 +13,20 @@ namespace acute {
 
 namespace {
 
-bool face_exempt(const Mesh& mesh, HalfedgeHandle heh, const std::vector<bool>& forced) {
-  for (auto h = heh, end = heh;;) {
-    const auto i = static_cast<std::size_t>(mesh.to_vertex_handle(h).idx());
-    if (i < forced.size() && forced[i]) return true;
-    h = mesh.next_halfedge_handle(h);
-    if (h == end) return false;
-  }
-}
-
 /// The star of a vertex as the pattern search sees it. Only the vertex moves, so each face, its
 /// other two corners, their positions and whether a corner is forced are read from the mesh once;
-/// an evaluation then walks plain arrays. Values and verdicts are those of star_energy,
-/// star_margin and can_relocate, term for term in the same order.
+/// an evaluation then walks plain arrays. star_energy and star_margin are its energy and margin;
+/// can_move_to gives can_relocate's verdict.
 class CachedStar {
  public:
-  static constexpr int kMaxFaces = 32;
-
-  /// False when the star has more faces than the cache holds (the caller uses the mesh then).
-  bool load(const Mesh& mesh, VertexHandle vh, const std::vector<bool>& forced) {
+  void load(const Mesh& mesh, VertexHandle vh, const std::vector<bool>& forced) {
     auto is_forced = [&](VertexHandle v) {
       const auto i = static_cast<std::size_t>(v.idx());
       return i < forced.size() && forced[i];
     };
     vh_ = vh;
     n_ = 0;
+    overflow_.clear();
     open_border_ = false;
     forced0_ = is_forced(vh);
     const auto& data = mesh.data(vh);
@@ -58,8 +47,9 @@ class CachedStar {
         open_border_ = open_border_ || !on_segment;
         continue;
       }
-      if (n_ == kMaxFaces) return false;
-      Face& f = faces_[n_++];
+      if (n_ >= kInline) overflow_.emplace_back();
+      Face& f = n_ < kInline ? faces_[n_] : overflow_.back();
+      ++n_;
       f.fh = mesh.face_handle(heh);
       f.v1 = mesh.to_vertex_handle(heh);
       f.v2 = mesh.to_vertex_handle(mesh.next_halfedge_handle(heh));
@@ -68,15 +58,17 @@ class CachedStar {
       f.forced1 = is_forced(f.v1);
       f.forced2 = is_forced(f.v2);
     }
-    return true;
   }
 
-  /// star_energy with the vertex at p (where the mesh has it too: forced corners read their sector).
+  /// The soft minimum of the star's angle margins with the vertex at p (where the mesh has it too:
+  /// forced corners read their sector from it): every angle near or beyond a bound pushes, the
+  /// worst most. (A plain max-min stalls when the worst angle cannot change, e.g. at a fixed input
+  /// corner.)
   double energy(const Mesh& mesh, const Point2& p, const AngleBounds& bounds, const std::vector<bool>& forced) const {
-    constexpr double kTau = 2.0;
+    constexpr double kTau = 2.0;  // degrees
     double energy = 0;
     for (int i = 0; i < n_; ++i) {
-      const Face& f = faces_[i];
+      const Face& f = face(i);
       const double angles[3] = {approx_angle_deg(p, f.p1, f.p2), approx_angle_deg(f.p1, f.p2, p), approx_angle_deg(f.p2, p, f.p1)};
       const bool forced_corner[3] = {forced0_, f.forced1, f.forced2};
       const VertexHandle corner[3] = {vh_, f.v1, f.v2};
@@ -89,11 +81,11 @@ class CachedStar {
     return energy;
   }
 
-  /// star_margin at the mesh's position of the vertex.
+  /// The smallest margin over the star's angles, at the mesh's position of the vertex.
   double margin(const Mesh& mesh, const AngleBounds& bounds) const {
     double margin = INFINITY;
     for (int i = 0; i < n_; ++i) {
-      const Face& f = faces_[i];
+      const Face& f = face(i);
       margin = std::min(margin, triangle_margin(mesh, f.fh, bounds, forced0_ || f.forced1 || f.forced2));
     }
     return margin;
@@ -114,7 +106,7 @@ class CachedStar {
       if (has_line_ && !close_enough_to_line(line_, p)) return false;
     }
     for (int i = 0; i < n_; ++i)
-      if (predicates::orient2d(p, faces_[i].p1, faces_[i].p2) != Sign::Positive) return false;
+      if (predicates::orient2d(p, face(i).p1, face(i).p2) != Sign::Positive) return false;
     return true;
   }
 
@@ -125,6 +117,10 @@ class CachedStar {
     Point2 p1, p2;
     bool forced1, forced2;
   };
+  /// Stars up to kInline faces (all but rare hubs) live in the object: no allocation per move.
+  static constexpr int kInline = 32;
+  const Face& face(int i) const { return i < kInline ? faces_[i] : overflow_[static_cast<std::size_t>(i - kInline)]; }
+
   VertexHandle vh_;
   int n_ = 0;
   bool forced0_ = false;
@@ -133,38 +129,22 @@ class CachedStar {
   Point2 along_[2];
   bool has_line_ = false;
   std::array<Point2, 2> line_{};
-  Face faces_[kMaxFaces];
+  Face faces_[kInline];
+  std::vector<Face> overflow_;
 };
 
 }  // namespace
 
 double star_margin(const Mesh& mesh, VertexHandle vh, const AngleBounds& bounds, const std::vector<bool>& forced) {
-  double margin = INFINITY;
-  for (auto heh : mesh.voh_range(vh)) {
-    if (mesh.is_boundary(heh)) continue;
-    margin = std::min(margin, triangle_margin(mesh, mesh.face_handle(heh), bounds, face_exempt(mesh, heh, forced)));
-  }
-  return margin;
+  CachedStar star;
+  star.load(mesh, vh, forced);
+  return star.margin(mesh, bounds);
 }
 
 double star_energy(const Mesh& mesh, VertexHandle vh, const AngleBounds& bounds, const std::vector<bool>& forced) {
-  // Soft minimum of the angle margins: every angle near or beyond a bound pushes, the worst most.
-  // (A plain max-min stalls when the worst angle cannot change, e.g. at a fixed input corner.)
-  constexpr double kTau = 2.0;  // degrees
-  double energy = 0;
-  for (auto heh : mesh.voh_range(vh)) {
-    if (mesh.is_boundary(heh)) continue;
-    const FaceHandle fh = mesh.face_handle(heh);
-    const VertexHandle corner[3] = {vh, mesh.to_vertex_handle(heh), mesh.to_vertex_handle(mesh.next_halfedge_handle(heh))};
-    const Point2 p0 = point2(mesh, corner[0]), p1 = point2(mesh, corner[1]), p2 = point2(mesh, corner[2]);
-    const double angles[3] = {approx_angle_deg(p0, p1, p2), approx_angle_deg(p1, p2, p0), approx_angle_deg(p2, p0, p1)};
-    for (int k = 0; k < 3; ++k) {
-      double m = bounds.max_deg - angles[k];
-      if (!min_exempt_corner(mesh, corner[k], fh, bounds.min_deg, forced)) m = std::min(m, angles[k] - bounds.min_deg);
-      energy += std::exp(-m / kTau);
-    }
-  }
-  return energy;
+  CachedStar star;
+  star.load(mesh, vh, forced);
+  return star.energy(mesh, point2(mesh, vh), bounds, forced);
 }
 
 bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds, const std::vector<bool>& forced) {
@@ -174,7 +154,9 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   // are below exp(-6) each, and a move changes no angle outside the star. (Most of a CVT mesh is
   // such stars; the pattern search would spend up to 240 evaluations on each.)
   constexpr double kComfortableMarginDeg = 12.0;
-  const double margin0 = star_margin(mesh, vh, bounds, forced);
+  CachedStar star;
+  star.load(mesh, vh, forced);
+  const double margin0 = star.margin(mesh, bounds);
   if (margin0 >= kComfortableMarginDeg) return false;
   // The soft minimum trades a little of the worst angle for much of the others: in a star with no
   // bad triangle that trade must not make one (a graded hub patch lost its thin wall triangles so).
@@ -204,18 +186,16 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   }
   auto place = [&](const Point2& p) { return on_segment ? project_on_line(ends, p) : p; };
 
-  CachedStar star;
-  const bool cached = star.load(mesh, vh, forced);
-  const double base = cached ? star.energy(mesh, start, bounds, forced) : star_energy(mesh, vh, bounds, forced);
+  const double base = star.energy(mesh, start, bounds, forced);
   double best = base;
   Point2 best_p = start;
   // Evaluates a candidate (exactly valid stars only) and keeps it when better.
   auto consider = [&](const Point2& q) {
     const Point2 p = place(q);
-    if (p == best_p || !(cached ? star.can_move_to(mesh, p) : can_relocate(mesh, vh, p) == OpVerdict::Ok)) return false;
+    if (p == best_p || !star.can_move_to(mesh, p)) return false;
     set_point2(mesh, vh, p);
-    const double m = cached ? star.energy(mesh, p, bounds, forced) : star_energy(mesh, vh, bounds, forced);
-    const bool better = m < best * (1 - 1e-12) && (!keep_good || (cached ? star.margin(mesh, bounds) : star_margin(mesh, vh, bounds, forced)) >= 0);
+    const double m = star.energy(mesh, p, bounds, forced);
+    const bool better = m < best * (1 - 1e-12) && (!keep_good || star.margin(mesh, bounds) >= 0);
     set_point2(mesh, vh, best_p);
     if (better) {
       best = m;
