@@ -210,7 +210,9 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       const RepairResult r = repair_acute(result.mesh, params);
       result.iterations += r.iterations;
       result.status = r.status == RepairStatus::Converged ? MeshStatus::Ok : MeshStatus::BoundsNotMet;
-      for (auto fh : r.status == RepairStatus::Converged ? std::vector<FaceHandle>{} : bad_triangles(result.mesh, params.bounds)) {
+      // A converged repair left nothing bad (its last scan found none): no whole-mesh scan again.
+      if (r.status == RepairStatus::Converged) break;
+      for (auto fh : bad_triangles(result.mesh, params.bounds)) {
         if (result.remaining.size() >= 100) break;
         BadTriangle t;
         t.corners = face_points(result.mesh, fh);
