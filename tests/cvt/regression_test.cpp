@@ -90,6 +90,7 @@ TEST(CvtRegression, debug2_sampling_keeps_the_enclosure) {
     SizeFieldParams sp;
     sp.target_vertices = n;
     sp.graded = true;
+    sp.hold_count = true;  // ~32k samples: the features alone would decide ~2M
     const SizeField f = make_size_field(cdt, sp);
     SamplingStats stats;
     Mesh mesh;
@@ -117,6 +118,7 @@ TEST(CvtRegression, guitar_neck_size_is_the_width_of_the_neck) {
     SizeFieldParams sp;
     sp.target_vertices = n;
     sp.graded = true;
+    sp.hold_count = true;  // ~32k samples: the features alone would decide ~2M
     const SizeField f = make_size_field(cdt, sp);
     EXPECT_LE(f(a), (a - b).norm() * (1 + 1e-9)) << d.name << " target " << n << ": h at vertex 83 above the width of the neck";
     EXPECT_LE(f(b), (a - b).norm() * (1 + 1e-9)) << d.name << " target " << n << ": h at vertex 90";

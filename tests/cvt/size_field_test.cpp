@@ -124,6 +124,31 @@ TEST(SizeField, a_segment_shorter_than_the_spacing_is_resolved) {
   }
 }
 
+// A strip 1 long and 1e-3 wide: the local feature size along its walls is its width, so at 10
+// vertices its features alone ask for some thousand, far over kMaxFeatureExcess times the count.
+TEST(SizeField, features_past_the_excess_decide_the_count_at_the_coarsest_factor_unless_it_is_held) {
+  const Mesh cdt = build_cdt(test::polygon_domain({{0, 0}, {1, 0}, {1, 1e-3}, {0, 1e-3}}, "strip"));
+  SizeFieldParams p;
+  p.target_vertices = 10;
+  p.graded = true;
+  p.lfs_factor = 0.7;
+  bool decide = false;
+  const SizeField free = make_size_field(cdt, p, nullptr, &decide);
+  EXPECT_TRUE(decide);
+  EXPECT_GT(predicted_vertex_count(cdt, free), 2 * kMaxFeatureExcess * 10) << "the features decide the count";
+  for (double x : {0.1, 0.5, 0.9}) {
+    EXPECT_LE(free({x, 5e-4}), 1.05 * kCoarsestLfsFactor * 1e-3) << x << ": the strip's width (its lfs samples are 2% wider near the ends)";
+    EXPECT_GT(free({x, 5e-4}), 0.7 * 1e-3 * (1 + 1e-3)) << x << ": coarser than the lfs factor asked for";
+  }
+  p.max_vertices = 400;
+  EXPECT_LE(predicted_vertex_count(cdt, make_size_field(cdt, p, nullptr, &decide)), 1.1 * 400) << "within the vertex budget";
+  EXPECT_FALSE(decide);
+  p.max_vertices = 0;
+  p.hold_count = true;
+  EXPECT_LE(predicted_vertex_count(cdt, make_size_field(cdt, p, nullptr, &decide)), 1.1 * kMaxFeatureExcess * 10) << "held near the request";
+  EXPECT_FALSE(decide);
+}
+
 TEST(SizeField, a_field_given_up_at_its_abandon_time_says_so) {
   // The CVT start gives itself up on this flag, not on its own clock: a grading round predicted to
   // outlast the share used to return a uniform field early, and the CVT then ran on it (debug2

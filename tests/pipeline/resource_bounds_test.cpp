@@ -37,6 +37,24 @@ bool has_note(const MeshResult& r, const std::string& word) {
   return false;
 }
 
+// Without a time limit the features decide: a strip 1 long and 1e-3 wide at a 10-vertex request
+// (its features alone ask for some thousand) is meshed at its width, and meets the bounds.
+TEST(ResourceBounds, features_needing_far_more_than_the_request_decide_the_count_without_a_time_limit) {
+  Domain d;
+  d.name = "strip";
+  d.points = {{0, 0}, {1, 0}, {1, 1e-3}, {0, 1e-3}};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  MeshOptions options;
+  options.target_vertices = 10;
+  const MeshResult r = generate_mesh(d, options);
+  EXPECT_EQ(r.status, MeshStatus::Ok);
+  EXPECT_GT(r.mesh.n_vertices(), 16u * 10u) << "more than the count held under a time limit";
+  EXPECT_TRUE(has_note(r, "small features need a finer size"));
+  EXPECT_EQ(bad_triangles(r.mesh, AngleBounds{}).size(), 0u);
+  EXPECT_EQ(test::verify_conforms(r.mesh, d, mesh_area(build_domain_cdt(d))), "");
+  EXPECT_EQ(test::verify_segment_chains(r.mesh, d), "");
+}
+
 /// The CVT start alone (the repair has its own budget tests) of a 500-tooth square (1003 input
 /// points) at a 200-vertex target under a vertex budget: within it, valid and conforming.
 void expect_cvt_start_within(std::size_t max_vertices) {

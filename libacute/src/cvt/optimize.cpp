@@ -403,12 +403,13 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   sp.lfs_factor = params.lfs_factor;
   sp.hmax = params.hmax;
   sp.max_vertices = params.max_vertices;
+  sp.hold_count = params.hold_count;
   if (params.time_limit_s > 0) {
     sp.time_limit_s = std::max(0.25 * params.time_limit_s - elapsed(), 1e-9);
     sp.abandon_after_s = std::max(params.time_limit_s - elapsed(), 1e-9);
   }
   bool size_field_abandoned = false;
-  out.size_field = make_size_field(cdt, sp, &size_field_abandoned);
+  out.size_field = make_size_field(cdt, sp, &size_field_abandoned, &out.features_decide);
   if (params.size_cap && !out.size_field.is_uniform()) {
     std::vector<double> values = out.size_field.background_values();
     const auto& points = out.size_field.background_points();
@@ -441,7 +442,7 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   out.over_budget = params.max_vertices > 0 && out.mesh.n_vertices() > params.max_vertices;
   CvtOptimizeParams op;
   op.lloyd_iterations = params.lloyd_iterations;
-  op.lbfgs_iterations = params.lbfgs_iterations;
+  op.lbfgs_iterations = params.lloyd_only_where_features_decide && out.features_decide ? 0 : params.lbfgs_iterations;
   op.move_tolerance = params.move_tolerance;
   op.active_move = params.active_move;
   if (params.time_limit_s > 0) {

@@ -593,10 +593,9 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
   return GradedFields(samples, dm, params.gradation).make(params.lfs_factor, hmin, hmax);
 }
 
-SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned) {
+SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned, bool* features_decide) {
   if (abandoned) *abandoned = false;
-  // With a vertex count, the lfs-bound field may exceed it by this factor at most.
-  constexpr double kMaxExcess = 16.0;
+  if (features_decide) *features_decide = false;
   if (params.size < 0 || !std::isfinite(params.size)) throw InvalidInput("size field: --size must be positive");
   if (params.size > 0) return SizeField::uniform(params.size);
   if (params.target_vertices > 0) {
@@ -626,11 +625,14 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
     if (std::getenv("ACUTE_TRACE")) std::fprintf(stderr, "size field: lfs-bound count %.0f, target %.0f\n", at_top, target);
     if (at_top >= target) {
       // The features alone need more than N: keep h <= lfs (the count exceeds the target) unless
-      // that is over kMaxExcess * N; then coarsen the lfs-bound sizes by a common factor lambda
-      // (count ~ 1 / lambda^2 there: a few secant steps).
-      double cap = kMaxExcess * target;
-      if (params.max_vertices > 0) cap = std::min(cap, static_cast<double>(params.max_vertices));
+      // that is over kMaxFeatureExcess * N; then coarsen the lfs-bound sizes by a common factor
+      // lambda (count ~ 1 / lambda^2 there: a few secant steps), up to kCoarsestLfsFactor unless
+      // the count is held.
+      const double budget = params.max_vertices > 0 ? static_cast<double>(params.max_vertices) : INFINITY;
+      double cap = std::min(kMaxFeatureExcess * target, budget);
       if (at_top <= cap) return ft;
+      const double coarsest = std::max(params.lfs_factor, kCoarsestLfsFactor);
+      bool at_coarsest = params.hold_count;  // (held: no stop at the coarsest factor)
       // Secant steps on log(count) against log(lambda): the exponent starts at the area's 2 and is
       // then measured (the boundary's 1 / lambda share and the hmin clamp make it smaller; debug2
       // at 2k vertices has 0.9, where assuming 2 left it 25% over after five steps).
@@ -641,6 +643,19 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
         if (past_abandon_time(params, start)) return given_up(hn, abandoned);
         const double last_lambda = lambda, last_count = count;
         lambda *= std::pow(count / cap, 1.0 / exponent);
+        if (!at_coarsest && lambda >= coarsest) {
+          // The features decide the count from here, within the vertex budget.
+          at_coarsest = true;
+          lambda = coarsest;
+          ft = fields.make(lambda, hmin, top);
+          count = predicted_vertex_count(input_cdt, ft);
+          if (count <= budget) {
+            if (features_decide) *features_decide = true;
+            return ft;
+          }
+          cap = budget;
+          continue;
+        }
         ft = fields.make(lambda, hmin, top);
         count = predicted_vertex_count(input_cdt, ft);
         if (count < last_count) exponent = std::clamp(std::log(last_count / count) / std::log(lambda / last_lambda), 0.5, 2.0);

@@ -146,12 +146,16 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       // Share a time limit between the CVT (at most half) and the repair (the rest).
       if (options.time_limit_s > 0) cp.time_limit_s = std::max(0.5 * options.time_limit_s - seconds_since(start), 1e-9);
       cp.max_vertices = options.max_vertices;
+      // Under a time limit a domain whose features need many times the vertex count could not be
+      // meshed at their density in time anyway: the count stays near the request.
+      cp.hold_count = options.time_limit_s > 0;
       if (options.method == Method::Acute || options.cvt_as_repair_start) {
         // The repair does not need a converged CVT, only well-spread vertices: a short optimisation.
         cp.lbfgs_iterations = 40;
         cp.lfs_factor = 0.7;  // room for interior vertices in strips between input points
         cp.move_tolerance = 3e-3;
         cp.active_move = 1e-3;  // the lattice away from its boundary rows and seams is centroidal already
+        cp.lloyd_only_where_features_decide = true;
       }
       if (options.observer)
         cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy, p.gradient_norm, p.phase}); };

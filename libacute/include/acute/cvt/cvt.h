@@ -97,6 +97,13 @@ struct CvtParams {
   /// > 0: at most this many vertices (the field is coarsened and the domain resampled when the
   /// samples exceed it; only the input points alone can exceed it, then CvtResult::over_budget)
   std::size_t max_vertices = 0;
+  bool hold_count = false;  ///< SizeFieldParams::hold_count
+  /// No L-BFGS steps when the features decide the vertex count (make_size_field's
+  /// features_decide): such a mesh is mostly strips a row or two wide, whose Voronoi cells are all
+  /// clipped by the walls, and the steps cost more than they give a repair that follows (debug2 at
+  /// 2,000 vertices: the CVT start 613 s with them, 149 s without; its 9-degree wedge 26 s -> 13 s
+  /// start to end)
+  bool lloyd_only_where_features_decide = false;
   std::function<void(const CvtProgress&)> observer;
 };
 
@@ -110,6 +117,7 @@ struct CvtResult {
   double gradient_norm = 0;
   bool over_budget = false;   ///< more vertices than max_vertices even at the coarsest field tried
   bool out_of_time = false;   ///< the time limit ended the start before the optimisation did
+  bool features_decide = false;  ///< the size field stopped at kCoarsestLfsFactor * lfs (make_size_field)
   /// The time limit ran out before there were samples to optimise (a huge domain: its size field
   /// alone outlasts the limit): mesh is empty, the caller keeps a mesh it has (the domain's CDT)
   bool abandoned = false;

@@ -62,6 +62,15 @@ class SizeField {
 /// are resolved (a coordinate still has some 10^7 representable values per such spacing), and the
 /// vertex-count caps keep their cost bounded.
 constexpr double kMinSizeRatio = 1e-9;
+/// With a vertex count, the features alone may ask for this many times the count before their
+/// sizes are coarsened (SizeFieldParams::hold_count).
+constexpr double kMaxFeatureExcess = 16.0;
+/// The coarsest feature-bound size, relative to the local feature size, when the features decide
+/// the count. A strip of width w takes one row of acute triangles across at edges of up to 1.15 w,
+/// but its square ends want an interior vertex (a 1 x 0.001 rectangle at 10 vertices: met in 1.1 s
+/// at 1.0, not in 150 repair iterations at 1.15 or 1.3); debug2's 9-degree wedge at 1.0: 62k
+/// vertices in 26 s against 110k in 55 s at the acute start's 0.7.
+constexpr double kCoarsestLfsFactor = 1.0;
 /// The graded field's default largest size, relative to the domain's diameter.
 constexpr double kDefaultMaxSizeRatio = 1.0 / 25.0;
 
@@ -76,6 +85,14 @@ struct SizeFieldParams {
   /// > 0: with target_vertices, the field predicts at most this many vertices (coarsening the
   /// feature-bound sizes when the features alone would need more)
   std::size_t max_vertices = 0;
+  /// With target_vertices, when the features alone (the lfs-bound field) ask for more than
+  /// kMaxFeatureExcess times the count, their sizes are coarsened by a common factor: false (the
+  /// default) stops at kCoarsestLfsFactor times the local feature size, and the features decide
+  /// the count (a strip still takes a row of acute triangles across); true goes on until the
+  /// field predicts kMaxFeatureExcess times the count (near the request, but thin strips are then
+  /// too coarse for the angle bounds: for a run under a time limit, which could not mesh them at
+  /// their density anyway)
+  bool hold_count = false;
   /// > 0: the count calibration stops after this many seconds with a field predicting at most the
   /// count (the coarsening of an over-fine feature-bound field always runs: it bounds the samples)
   double time_limit_s = 0;
@@ -126,12 +143,16 @@ SizeField local_feature_size_field(const Mesh& input_cdt, const SizeFieldParams&
 /// Chooses the field from params: uniform(size); for target_vertices uniform, or (graded) the graded
 /// field with hmax >= the uniform size h_N for N vertices, hmax chosen so the predicted count is
 /// within 2% of N. The field never exceeds lfs_factor * lfs: when the features alone need more
-/// than N vertices, the count exceeds the target (hmax then the diameter), up to 16 N; beyond
-/// that the lfs-bound sizes are coarsened by a common factor to about 16 N (pathological inputs
-/// such as thousands of needle-thin spikes). Else the graded field.
+/// than N vertices, the count exceeds the target (hmax then the diameter), up to
+/// kMaxFeatureExcess * N; beyond that the lfs-bound sizes are coarsened by a common factor, up to
+/// kCoarsestLfsFactor * lfs (the features then decide the count, within max_vertices), or with
+/// hold_count to about kMaxFeatureExcess * N (pathological inputs such as thousands of
+/// needle-thin spikes). Else the graded field.
 /// *abandoned (when given) says whether params.abandon_after_s gave the field up: then a uniform
 /// field comes back and the caller gives its start up too (also when the abandon time is only
 /// predicted to pass: a grading round that would outlast it is not started).
-SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned = nullptr);
+/// *features_decide (when given) says whether the field stopped at kCoarsestLfsFactor * lfs.
+SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned = nullptr,
+                          bool* features_decide = nullptr);
 
 }  // namespace acute
