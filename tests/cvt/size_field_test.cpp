@@ -124,6 +124,12 @@ TEST(SizeField, a_segment_shorter_than_the_spacing_is_resolved) {
   }
 }
 
+TEST(SizeField, wide_corners_are_the_input_vertices_with_a_sector_of_at_least_80_degrees) {
+  // The L-shape: five 90-degree corners and one of 270; a triangle: 60-degree corners only.
+  EXPECT_EQ(local_feature_size_samples(build_cdt(test::l_shape()), 0.1).wide_corners.size(), 6u);
+  EXPECT_EQ(local_feature_size_samples(build_cdt(test::polygon_domain({{0, 0}, {1, 0}, {0.5, 0.8660254037844386}}, "equilateral")), 0.1).wide_corners.size(), 0u);
+}
+
 // A strip 1 long and 1e-3 wide: the local feature size along its walls is its width, so at 10
 // vertices its features alone ask for some thousand, far over kMaxFeatureExcess times the count.
 TEST(SizeField, features_past_the_excess_decide_the_count_at_the_coarsest_factor_unless_it_is_held) {
@@ -140,6 +146,10 @@ TEST(SizeField, features_past_the_excess_decide_the_count_at_the_coarsest_factor
     EXPECT_LE(free({x, 5e-4}), 1.05 * kCoarsestLfsFactor * 1e-3) << x << ": the strip's width (its lfs samples are 2% wider near the ends)";
     EXPECT_GT(free({x, 5e-4}), 0.7 * 1e-3 * (1 + 1e-3)) << x << ": coarser than the lfs factor asked for";
   }
+  // Its four 90-degree corners are wide (one triangle cannot cover one): they keep the factor asked
+  // for, room for the vertex that splits them.
+  EXPECT_EQ(local_feature_size_samples(cdt, 0.06).wide_corners.size(), 4u);
+  for (const Point2& corner : {Point2(0, 0), Point2(1, 1e-3)}) EXPECT_LE(free(corner), 0.7 * 1e-3 * (1 + 1e-9));
   p.max_vertices = 400;
   EXPECT_LE(predicted_vertex_count(cdt, make_size_field(cdt, p, nullptr, &decide)), 1.1 * 400) << "within the vertex budget";
   EXPECT_FALSE(decide);

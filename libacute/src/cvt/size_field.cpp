@@ -3,6 +3,7 @@
 #include <acute/core/errors.h>
 #include <acute/delaunay/cdt.h>
 #include <acute/mesh/geometry.h>
+#include <acute/mesh/sectors.h>
 #include <acute/predicates/predicates.h>
 
 #include "cvt/narrow_sectors.h"
@@ -461,15 +462,20 @@ bool add_grading_points(LfsSamples& samples, double gradation, double hmax, cons
 /// the fits of make_size_field (several factors or caps in a row) triangulate once per step.
 class GradedFields {
  public:
-  GradedFields(const LfsSamples& samples, const DomainMeasures& dm, double gradation)
-      : dm_(dm), slope_(std::max(gradation - 1.0, 0.0)) {
+  /// wide_factor: the largest lfs factor at the samples on wide corners (LfsSamples::wide_corners).
+  GradedFields(const LfsSamples& samples, const DomainMeasures& dm, double gradation, double wide_factor)
+      : dm_(dm), slope_(std::max(gradation - 1.0, 0.0)), wide_factor_(wide_factor) {
     const double inf = std::numeric_limits<double>::infinity();
+    std::vector<std::array<double, 2>> wide;
+    for (const Point2& p : samples.wide_corners) wide.push_back({p.x(), p.y()});
+    std::sort(wide.begin(), wide.end());
     for (std::size_t i = 0; i < samples.points.size(); ++i) {
       const Point2& p = samples.points[i];
       lo_ = lo_.cwiseMin(p), hi_ = hi_.cwiseMax(p);
       if (!(samples.lfs[i] < inf)) continue;
       points_.push_back(p);
       lfs_.push_back(samples.lfs[i]);
+      wide_.push_back(std::binary_search(wide.begin(), wide.end(), std::array<double, 2>{p.x(), p.y()}));
     }
   }
 
@@ -478,7 +484,8 @@ class GradedFields {
     const double step = std::clamp(hmax, dm_.diameter / 200.0, dm_.diameter / 50.0);
     if (step != step_) triangulate(step);
     std::vector<double> values(background_.background_points().size(), hmax);
-    for (std::size_t i = 0; i < lfs_.size(); ++i) values[i] = std::clamp(lfs_factor * lfs_[i], hmin, hmax);
+    for (std::size_t i = 0; i < lfs_.size(); ++i)
+      values[i] = std::clamp((wide_[i] ? std::min(lfs_factor, wide_factor_) : lfs_factor) * lfs_[i], hmin, hmax);
     grade(*graph_, values, slope_);
     return background_.with_values(std::move(values));
   }
@@ -503,6 +510,8 @@ class GradedFields {
   Point2 hi_{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   std::vector<Point2> points_;  ///< the samples with a finite lfs
   std::vector<double> lfs_;
+  double wide_factor_;
+  std::vector<char> wide_;  ///< the sample is on a wide corner
   double step_ = -1;
   SizeField background_;  ///< samples + grid at step_, triangulated
   std::unique_ptr<EdgeGraph> graph_;  ///< background_'s edges
@@ -549,6 +558,15 @@ LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap) {
   }
   // Narrow sectors: their two walls share the apex, so neither sees the other above.
   detail::append_strip_samples(cdt, out.points, out.lfs);
+  constexpr double kWide = kWideCornerDeg * 3.14159265358979323846 / 180.0;
+  for (auto vh : cdt.vertices()) {
+    if (cdt.status(vh).deleted() || !is_input(cdt, vh)) continue;
+    for (const SegmentSector& sector : segment_sectors(cdt, vh))
+      if (sector.radians >= kWide) {
+        out.wide_corners.push_back(point2(cdt, vh));
+        break;
+      }
+  }
   // Samples at one point (a vertex's foot on another input vertex, beside that vertex's own
   // sample) keep the smallest value: the field's triangulation keeps one of them, and were it the
   // large one, a feature shorter than the spacing would vanish from the field.
@@ -590,7 +608,7 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
   if (!add_grading_points(samples, params.gradation, hmax, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||
       past_abandon_time(params, start))
     return given_up(hmax, abandoned);
-  return GradedFields(samples, dm, params.gradation).make(params.lfs_factor, hmin, hmax);
+  return GradedFields(samples, dm, params.gradation, params.lfs_factor).make(params.lfs_factor, hmin, hmax);
 }
 
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned, bool* features_decide) {
@@ -615,7 +633,8 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
     if (!add_grading_points(samples, params.gradation, hn, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||
         past_abandon_time(params, start))
       return given_up(hn, abandoned);
-    GradedFields fields(samples, dm, params.gradation);
+    // A held count coarsens wide corners too (they would keep it far over the cap: debug2's 10,000).
+    GradedFields fields(samples, dm, params.gradation, params.hold_count ? INFINITY : params.lfs_factor);
     auto field_at = [&](double hmax) { return fields.make(params.lfs_factor, hmin, hmax); };
     const double top = std::max(hn, dm.diameter);
     if (past_abandon_time(params, start)) return given_up(hn, abandoned);

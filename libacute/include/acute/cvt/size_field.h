@@ -130,7 +130,15 @@ double predicted_vertex_count(const Mesh& mesh, const SizeField& field);
 struct LfsSamples {
   std::vector<Point2> points;
   std::vector<double> lfs;
+  /// Input vertices with a sector of at least kWideCornerDeg between their segments: one
+  /// triangle cannot cover it within the angle bounds, so its sizes are never coarsened beyond the
+  /// lfs factor asked for (the split needs a vertex inside the corner: at a strip's square end,
+  /// an edge as long as the strip is wide leaves no room for one).
+  std::vector<Point2> wide_corners;
 };
+/// The sector angle from which an input corner counts as wide (LfsSamples::wide_corners): 80
+/// degrees, below the default max bound so that bounds down to 80 degrees are covered.
+constexpr double kWideCornerDeg = 80.0;
 LfsSamples local_feature_size_samples(const Mesh& input_cdt, double spacing_cap);
 
 /// The graded field of the input: h = lfs_factor * lfs at the local_feature_size_samples (spacing
