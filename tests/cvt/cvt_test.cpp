@@ -418,5 +418,29 @@ TEST(Cvt, subset_optimisation_moves_only_the_subset) {
   EXPECT_TRUE(check_mesh(p.mesh, CheckLevel::Delaunay).ok()) << d.name;
 }
 
+// A strip 1 long and 1e-3 wide at 10 vertices: the features decide the count (make_size_field),
+// and the acute start's CVT then takes Lloyd steps only.
+TEST(Cvt, lloyd_only_where_the_features_decide_the_count) {
+  const Domain strip = test::polygon_domain({{0, 0}, {1, 0}, {1, 1e-3}, {0, 1e-3}}, "strip");
+  CvtParams p;
+  p.target_vertices = 10;
+  p.graded = true;
+  p.lfs_factor = 0.7;
+  p.lloyd_iterations = 2;
+  p.lbfgs_iterations = 3;
+  p.move_tolerance = 0;  // no early stop: the steps are counted
+  const CvtResult both = cvt_mesh(strip, p);
+  EXPECT_TRUE(both.features_decide);
+  EXPECT_EQ(both.optimization.lbfgs_iterations, 3);
+  p.lloyd_only_where_features_decide = true;
+  const CvtResult lloyd = cvt_mesh(strip, p);
+  EXPECT_EQ(lloyd.optimization.lloyd_iterations, 2);
+  EXPECT_EQ(lloyd.optimization.lbfgs_iterations, 0);
+  p.target_vertices = 1000;  // the features' count is within 16 times this: L-BFGS as asked
+  const CvtResult fine = cvt_mesh(strip, p);
+  EXPECT_FALSE(fine.features_decide);
+  EXPECT_EQ(fine.optimization.lbfgs_iterations, 3);
+}
+
 }  // namespace
 }  // namespace acute
