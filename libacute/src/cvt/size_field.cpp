@@ -651,7 +651,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
       double cap = std::min(kMaxFeatureExcess * target, budget);
       if (at_top <= cap) return ft;
       const double coarsest = std::max(params.lfs_factor, kCoarsestLfsFactor);
-      bool at_coarsest = params.hold_count;  // (held: no stop at the coarsest factor)
+      bool stop_at_coarsest = !params.hold_count;  // once: past it the budget is the only cap
       // Secant steps on log(count) against log(lambda): the exponent starts at the area's 2 and is
       // then measured (the boundary's 1 / lambda share and the hmin clamp make it smaller; debug2
       // at 2k vertices has 0.9, where assuming 2 left it 25% over after five steps).
@@ -662,9 +662,9 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
         if (past_abandon_time(params, start)) return given_up(hn, abandoned);
         const double last_lambda = lambda, last_count = count;
         lambda *= std::pow(count / cap, 1.0 / exponent);
-        if (!at_coarsest && lambda >= coarsest) {
+        if (stop_at_coarsest && lambda >= coarsest) {
           // The features decide the count from here, within the vertex budget.
-          at_coarsest = true;
+          stop_at_coarsest = false;
           lambda = coarsest;
           ft = fields.make(lambda, hmin, top);
           count = predicted_vertex_count(input_cdt, ft);
