@@ -46,13 +46,29 @@ TEST(ResourceBounds, features_needing_far_more_than_the_request_decide_the_count
   d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
   MeshOptions options;
   options.target_vertices = 10;
+  std::vector<std::string> early;  // told while the run goes on, before the CVT and the repair
+  options.on_note = [&](const std::string& note) { early.push_back(note); };
   const MeshResult r = generate_mesh(d, options);
   EXPECT_EQ(r.status, MeshStatus::Ok);
   EXPECT_GT(r.mesh.n_vertices(), 16u * 10u) << "more than the count held under a time limit";
   EXPECT_TRUE(has_note(r, "small features need a finer size"));
+  ASSERT_EQ(early.size(), 1u);
+  EXPECT_NE(early[0].find("small features need"), std::string::npos) << early[0];
   EXPECT_EQ(bad_triangles(r.mesh, AngleBounds{}).size(), 0u);
   EXPECT_EQ(test::verify_conforms(r.mesh, d, mesh_area(build_domain_cdt(d))), "");
   EXPECT_EQ(test::verify_segment_chains(r.mesh, d), "");
+}
+
+TEST(ResourceBounds, no_early_note_where_the_request_decides_the_count) {
+  Domain d;
+  d.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  MeshOptions options;
+  options.target_vertices = 200;
+  std::vector<std::string> early;
+  options.on_note = [&](const std::string& note) { early.push_back(note); };
+  EXPECT_EQ(generate_mesh(d, options).status, MeshStatus::Ok);
+  EXPECT_TRUE(early.empty()) << early.front();
 }
 
 /// The CVT start alone (the repair has its own budget tests) of a 500-tooth square (1003 input

@@ -59,6 +59,7 @@ int run_mesh(const MeshArgs& args, const GlobalOptions& global) {
       else
         progress.update(p.phase, p.iteration, p.bad);
     };
+  if (!global.quiet) options.on_note = [&progress](const std::string& note) { progress.print("acute: note: " + note + "\n"); };
   MeshResult result;
   try {
     result = generate_mesh(domain, options);

@@ -58,6 +58,13 @@ void ProgressLine::update_cvt(int iteration, const char* step, double energy, do
                  gradient_norm);
 }
 
+void ProgressLine::print(const std::string& line) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::fprintf(stderr, "%s%s", drawn_ && !stopped_ ? "\r\033[K" : "", line.c_str());
+  if (terminal_ && !stopped_) draw_locked();
+  std::fflush(stderr);
+}
+
 void ProgressLine::draw_locked() {
   char line[160];
   int n = std::snprintf(line, sizeof line, "acute: %-22s", phase_label(phase_));

@@ -34,6 +34,10 @@ class ProgressLine {
   /// A CVT iteration: with -v off a terminal, logged with its energy and gradient norm.
   void update_cvt(int iteration, const char* step, double energy, double gradient_norm);
 
+  /// Prints `line` (a whole message with its newline) on stderr above the progress line, which
+  /// goes on; plain output when there is no line.
+  void print(const std::string& line);
+
   /// Stops the redrawing and clears the line; later updates are ignored.
   void finish();
 

@@ -53,6 +53,9 @@ struct MeshOptions {
   double time_limit_s = 0;      ///< 0: none
   CdtOptions cdt;
   std::function<void(const MeshProgress&)> observer;
+  /// Remarks worth telling the user while the run goes on (e.g. that the domain's features need
+  /// many times the vertices requested, so the run will be long); MeshResult::notes has the rest.
+  std::function<void(const std::string&)> on_note;
 };
 
 enum class MeshStatus {

@@ -440,6 +440,7 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
     out.mesh = sample_domain(domain, cdt, out.size_field, samp, &out.sampling);
   }
   out.over_budget = params.max_vertices > 0 && out.mesh.n_vertices() > params.max_vertices;
+  if (params.on_sampled) params.on_sampled(out.mesh.n_vertices(), out.features_decide);
   CvtOptimizeParams op;
   op.lloyd_iterations = params.lloyd_iterations;
   op.lbfgs_iterations = params.lloyd_only_where_features_decide && out.features_decide ? 0 : params.lbfgs_iterations;

@@ -159,6 +159,13 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       }
       if (options.observer)
         cp.observer = [&](const CvtProgress& p) { options.observer(MeshProgress{"cvt", p.iteration, 0, p.energy, p.gradient_norm, p.phase}); };
+      if (options.on_note && options.target_vertices > 0)
+        cp.on_sampled = [&](std::size_t vertices, bool features_decide) {
+          if (!features_decide) return;
+          options.on_note("the domain's small features need " + std::to_string(vertices) + " vertices for the " +
+                          std::to_string(options.target_vertices) +
+                          " requested: expect a long run (--max-vertices bounds the count, --time-limit the time)");
+        };
       // The fallback start: the CDT refined within the vertex budget and `seconds` (with a time limit).
       auto refine_start = [&](double seconds) {
         RefineParams rp;
