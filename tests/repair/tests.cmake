@@ -8,6 +8,7 @@ acute_add_test(repair_tests
     repair/non_obtuse_test.cpp
     repair/polar_fan_test.cpp
     repair/region_test.cpp
+    repair/relocation_test.cpp
     repair/repair_test.cpp
   LIBS acute_pipeline acute_io)
 target_include_directories(repair_tests PRIVATE ${GMPXX_INCLUDE_DIR})

@@ -13,7 +13,7 @@ namespace acute {
 
 namespace {
 
-/// The star of a vertex as the pattern search sees it. Only the vertex moves, so each face, its
+/// The star of a vertex as the descent sees it. Only the vertex moves, so each face, its
 /// other two corners, their positions and whether a corner is forced are read from the mesh once;
 /// an evaluation then walks plain arrays. star_energy and star_margin are its energy and margin;
 /// can_move_to gives can_relocate's verdict.
@@ -63,21 +63,38 @@ class CachedStar {
   /// The soft minimum of the star's angle margins with the vertex at p (where the mesh has it too:
   /// forced corners read their sector from it): every angle near or beyond a bound pushes, the
   /// worst most. (A plain max-min stalls when the worst angle cannot change, e.g. at a fixed input
-  /// corner.)
-  double energy(const Mesh& mesh, const Point2& p, const AngleBounds& bounds, const std::vector<bool>& forced) const {
+  /// corner.) With `gradient`, also its gradient with respect to p.
+  double energy(const Mesh& mesh, const Point2& p, const AngleBounds& bounds, const std::vector<bool>& forced, Point2* gradient = nullptr) const {
     constexpr double kTau = 2.0;  // degrees
+    constexpr double kDeg = 57.29577951308232;
     double energy = 0;
+    Point2 grad(0, 0);
     for (int i = 0; i < n_; ++i) {
       const Face& f = face(i);
-      const double angles[3] = {approx_angle_deg(p, f.p1, f.p2), approx_angle_deg(f.p1, f.p2, p), approx_angle_deg(f.p2, p, f.p1)};
+      // The angles at p1 and p2; the one at p is what is left of 180 degrees.
+      const double a1 = approx_angle_deg(f.p1, f.p2, p), a2 = approx_angle_deg(f.p2, p, f.p1);
+      const double angles[3] = {180.0 - a1 - a2, a1, a2};
       const bool forced_corner[3] = {forced0_, f.forced1, f.forced2};
       const VertexHandle corner[3] = {vh_, f.v1, f.v2};
+      double slope[3];  // d energy / d angle
       for (int k = 0; k < 3; ++k) {
-        double m = bounds.max_deg - angles[k];
-        if (!(forced_corner[k] && min_exempt_corner(mesh, corner[k], f.fh, bounds.min_deg, forced))) m = std::min(m, angles[k] - bounds.min_deg);
-        energy += std::exp(-m / kTau);
+        const double to_max = bounds.max_deg - angles[k];
+        const bool min_applies = !(forced_corner[k] && min_exempt_corner(mesh, corner[k], f.fh, bounds.min_deg, forced));
+        const bool min_binds = min_applies && angles[k] - bounds.min_deg < to_max;
+        const double e = std::exp(-(min_binds ? angles[k] - bounds.min_deg : to_max) / kTau);
+        energy += e;
+        slope[k] = min_binds ? -e / kTau : e / kTau;
       }
+      if (!gradient) continue;
+      // In a counter-clockwise triangle (p, p1, p2) the angle at p1 is arg(p - p1) - arg(p2 - p1) and
+      // the one at p2 is arg(p1 - p2) - arg(p - p2); the one at p is 180 degrees minus both.
+      const Point2 w1 = p - f.p1, w2 = p - f.p2;
+      const double n1 = w1.squaredNorm(), n2 = w2.squaredNorm();
+      if (!(n1 > 0) || !(n2 > 0)) continue;
+      const Point2 d1 = kDeg * Point2(-w1.y(), w1.x()) / n1, d2 = -kDeg * Point2(-w2.y(), w2.x()) / n2;
+      grad += (slope[1] - slope[0]) * d1 + (slope[2] - slope[0]) * d2;
     }
+    if (gradient) *gradient = grad;
     return energy;
   }
 
@@ -152,7 +169,7 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   if (data.kind == VertexKind::Input || closes_strip_apex(mesh, vh, forced, bounds.min_deg)) return false;
   // A star whose every angle is this far inside the bounds has nothing to gain: its energy terms
   // are below exp(-6) each, and a move changes no angle outside the star. (Most of a CVT mesh is
-  // such stars; the pattern search would spend up to 240 evaluations on each.)
+  // such stars; the descent would spend a dozen evaluations on each.)
   constexpr double kComfortableMarginDeg = 12.0;
   CachedStar star;
   star.load(mesh, vh, forced);
@@ -186,20 +203,22 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   }
   auto place = [&](const Point2& p) { return on_segment ? project_on_line(ends, p) : p; };
 
-  const double base = star.energy(mesh, start, bounds, forced);
+  Point2 gradient(0, 0), trial_gradient(0, 0);
+  const double base = star.energy(mesh, start, bounds, forced, &gradient);
   double best = base;
   Point2 best_p = start;
-  // Evaluates a candidate (exactly valid stars only) and keeps it when better.
+  // Evaluates a candidate (exactly valid stars only) and keeps it, with its gradient, when better.
   auto consider = [&](const Point2& q) {
     const Point2 p = place(q);
     if (p == best_p || !star.can_move_to(mesh, p)) return false;
     set_point2(mesh, vh, p);
-    const double m = star.energy(mesh, p, bounds, forced);
+    const double m = star.energy(mesh, p, bounds, forced, &trial_gradient);
     const bool better = m < best * (1 - 1e-12) && (!keep_good || star.margin(mesh, bounds) >= 0);
     set_point2(mesh, vh, best_p);
     if (better) {
       best = m;
       best_p = p;
+      gradient = trial_gradient;
       set_point2(mesh, vh, p);
       return true;
     }
@@ -207,20 +226,19 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   };
 
   if (!on_segment) consider(centroid);
-  // Pattern search: 8 directions (2 along a segment), halving the step when nothing improves.
-  static const double kDirs[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {0.7071067811865476, 0.7071067811865476},
-                                     {-0.7071067811865476, 0.7071067811865476}, {0.7071067811865476, -0.7071067811865476},
-                                     {-0.7071067811865476, -0.7071067811865476}};
+  // Descent along the gradient (along the segment for a vertex on one): a refused step halves,
+  // an accepted one grows by half. A tenth of the pattern search's evaluations for the same
+  // resolution (it tried 8 directions a step).
   double step = 0.2 * mean_edge;
   const double min_step = 1e-3 * mean_edge;
-  for (int it = 0; it < 30 && step > min_step; ++it) {
-    bool improved = false;
-    if (on_segment) {
-      improved = consider(best_p + step * axis) || consider(best_p - step * axis);
-    } else {
-      for (const auto& d : kDirs) improved = consider(best_p + step * Point2(d[0], d[1])) || improved;
-    }
-    if (!improved) step *= 0.5;
+  for (int it = 0; it < 40 && step > min_step; ++it) {
+    const Point2 d = on_segment ? Point2(gradient.dot(axis) * axis) : gradient;
+    const double norm = d.norm();
+    if (!(norm > 0) || !std::isfinite(norm)) break;
+    if (consider(best_p - (step / norm) * d))
+      step = std::min(1.5 * step, 0.5 * mean_edge);
+    else
+      step *= 0.5;
   }
   set_point2(mesh, vh, best_p);
   return best_p != start;

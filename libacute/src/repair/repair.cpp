@@ -264,7 +264,9 @@ class Repairer {
           if (!mesh_.is_boundary(heh)) margin = std::min(margin, face_margin_[static_cast<std::size_t>(mesh_.face_handle(heh).idx())]);
         if (margin < 4.0) near.push_back(vh);
       }
+      const std::size_t relocated0 = result_.relocated;
       smooth(near, 1);
+      if (trace_) std::fprintf(stderr, "global phase: %zu vertices near the bounds, %zu moved\n", near.size(), result_.relocated - relocated0);
     }
     // Local phase: each cluster's neighbourhood is copied, candidate operations are tried on the
     // copy, and the best one is written back when it improves the region.

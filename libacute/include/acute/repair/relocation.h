@@ -1,5 +1,5 @@
 // Layer: repair. Our vertex relocation: move a vertex to minimise a soft minimum of the margins of
-// the angles of its one-ring to the bounds (pattern search over the feasible star, exact validity checks);
+// the angles of its one-ring to the bounds (descent along its gradient over the feasible star, exact validity checks);
 // vertices on a segment search along it; input vertices never move.
 #pragma once
 
