@@ -26,6 +26,24 @@ TEST(SnapToLine, points_of_a_tiny_segment_far_from_origin_stay_within_1e_10_of_i
   EXPECT_LT(worst_snapped, 1e-10);
 }
 
+// The filtered test agrees with the exact deviation on points from 2^-40 to 2^-28 off a line.
+TEST(CloseEnoughToLine, agrees_with_the_exact_deviation) {
+  const std::array<Point2, 2> lines[] = {{Point2(0, 0), Point2(4, 2)}, kTinyFar, {Point2(1e6, -3e5), Point2(1e6 + 3.3, -3e5 + 7.1)}};
+  int near = 0, far = 0;
+  for (const auto& ends : lines) {
+    const Point2 d = ends[1] - ends[0], normal = Point2(-d.y(), d.x()) / d.norm();
+    for (int i = 0; i < 2000; ++i) {
+      const double t = (i % 97) / 97.0, off = std::ldexp(1.0 + (i % 13) / 13.0, -40 + (i % 12)) * d.norm();
+      const Point2 p = ends[0] + t * d + ((i % 2) ? off : -off) * normal;
+      const bool exact = line_deviation(ends, p) <= kMaxSegmentDeviation;
+      EXPECT_EQ(close_enough_to_line(ends, p), exact) << "deviation " << line_deviation(ends, p);
+      (exact ? near : far) += 1;
+    }
+  }
+  EXPECT_GT(near, 0);
+  EXPECT_GT(far, 0);
+}
+
 TEST(SnapToLine, keeps_a_point_already_on_the_line) {
   const std::array<Point2, 2> ends{Point2(0, 0), Point2(4, 2)};
   EXPECT_EQ(snap_to_line(ends, Point2(1, 0.5)), Point2(1, 0.5));

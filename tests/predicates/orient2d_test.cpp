@@ -80,6 +80,21 @@ TEST(Orient2d, near_collinear_perturbed_points_match_exact_oracle) {
   }
 }
 
+// The estimate's error bound covers its distance to the exact value (orient2d_value, rounded once).
+TEST(Orient2d, estimate_error_bound_covers_the_exact_value) {
+  Rng rng(5);
+  for (int i = 0; i < 20000; ++i) {
+    const double box = std::pow(10.0, uniform_int(rng, -5, 5));
+    const Point2 a = random_in_box(rng, -box, box), b = random_in_box(rng, -box, box);
+    const Point2 c = i % 2 ? random_in_box(rng, -box, box) : perturb(rng, a + uniform(rng, -2, 3) * (b - a), 3);
+    double error = -1;
+    const double estimate = predicates::orient2d_estimate(a, b, c, error);
+    const double exact = predicates::orient2d_value(a, b, c);
+    EXPECT_GE(error, 0);
+    EXPECT_LE(std::abs(estimate - exact), error + 0x1p-52 * std::abs(exact)) << describe(a, b, c);
+  }
+}
+
 TEST(Orient2d, constructed_collinear_points_are_exactly_zero) {
   Rng rng(3);
   for (int i = 0; i < 5000; ++i) {

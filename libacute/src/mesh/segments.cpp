@@ -204,15 +204,34 @@ double line_deviation(const std::array<Point2, 2>& ends, const Point2& p) {
   return std::fabs(predicates::orient2d_value(a, b, p)) / (b - a).squaredNorm();
 }
 
-bool close_enough_to_line(const std::array<Point2, 2>& ends, const Point2& p) { return line_deviation(ends, p) <= kMaxSegmentDeviation; }
+namespace {
+
+/// line_deviation(ends, p) <= limit, from the filtered determinant when its error bound decides
+/// (almost always: a relocation asks this of every trial point on a segment), else exactly.
+bool deviation_at_most(const std::array<Point2, 2>& ends, const Point2& p, double limit) {
+  const auto& [a, b] = ends;
+  double error = 0;
+  const double value = std::fabs(predicates::orient2d_estimate(a, b, p, error));
+  const double len2 = (b - a).squaredNorm();
+  constexpr double kSlack = 1 + 0x1p-48;  // covers the roundings of the sums and quotients below
+  if ((value + error) * kSlack / len2 <= limit) return true;
+  if ((value - error) / (len2 * kSlack) > limit * kSlack) return false;
+  return line_deviation(ends, p) <= limit;
+}
+
+}  // namespace
+
+bool close_enough_to_line(const std::array<Point2, 2>& ends, const Point2& p) { return deviation_at_most(ends, p, kMaxSegmentDeviation); }
 
 Point2 snap_to_line(const std::array<Point2, 2>& ends, const Point2& q, const Point2* lo, const Point2* hi) {
   const auto& [a, b] = ends;
   const Point2 d = b - a;
   if (!(d.squaredNorm() > 0) || !std::isfinite(q.x()) || !std::isfinite(q.y())) return q;
   constexpr double inf = std::numeric_limits<double>::infinity();
+  const bool q_in_bracket = in_bracket(ends, q, lo, hi);
+  if (q_in_bracket && deviation_at_most(ends, q, kGoodEnough)) return q;
   Point2 best = q;
-  double best_dev = in_bracket(ends, q, lo, hi) ? line_deviation(ends, q) : inf;
+  double best_dev = q_in_bracket ? line_deviation(ends, q) : inf;
   if (best_dev <= kGoodEnough) return q;
   const int k = std::fabs(d.x()) >= std::fabs(d.y()) ? 0 : 1, j = 1 - k;
 #ifdef __SIZEOF_INT128__

@@ -31,6 +31,13 @@ double orient2d_value(const Point2& a, const Point2& b, const Point2& c) {
   return detail::difference(detail::product(bax, cay), detail::product(bay, cax)).estimate();
 }
 
+double orient2d_estimate(const Point2& a, const Point2& b, const Point2& c, double& error) {
+  const double left = (b.x() - a.x()) * (c.y() - a.y());
+  const double right = (b.y() - a.y()) * (c.x() - a.x());
+  error = detail::kOrient2dBound * (std::fabs(left) + std::fabs(right));
+  return left - right;
+}
+
 Sign orient2d(const Point2& a, const Point2& b, const Point2& c) {
   const double left = (b.x() - a.x()) * (c.y() - a.y());
   const double right = (b.y() - a.y()) * (c.x() - a.x());

@@ -1,5 +1,6 @@
 #include <acute/repair/joint_relaxation.h>
 
+#include <acute/mesh/geometry.h>
 #include <acute/mesh/segments.h>
 #include <acute/ops/relocate.h>
 #include <acute/predicates/predicates.h>
@@ -81,15 +82,20 @@ Patch make_patch(const Mesh& mesh, const std::vector<VertexHandle>& vertices, co
 double patch_energy(const Mesh& mesh, const Patch& patch, const AngleBounds& bounds, double tau, std::vector<Point2>* grad) {
   if (grad) std::fill(grad->begin(), grad->end(), Point2(0, 0));
   double energy = 0;
+  // exp((min - theta) / tau) = exp((min - max) / tau) / exp((theta - max) / tau): one exponential an
+  // angle (theta - max lies in [-180, 0] degrees, so neither factor under- or overflows).
+  const double lo_over_hi = std::exp((bounds.min_deg - bounds.max_deg) / tau);
   for (std::size_t f = 0; f < patch.faces.size(); ++f) {
     const auto& v = patch.faces[f];
     const Point2 p[3] = {point2(mesh, v[0]), point2(mesh, v[1]), point2(mesh, v[2])};
     for (int k = 0; k < 3; ++k) {
       const Point2& a = p[k];
       const Point2 u = p[(k + 1) % 3] - a, w = p[(k + 2) % 3] - a;
-      const double theta = std::atan2(std::abs(u.x() * w.y() - u.y() * w.x()), u.dot(w)) * kDeg;
+      const double theta = approx_angle_deg(a, p[(k + 1) % 3], p[(k + 2) % 3]);
       const double hi = std::exp((theta - bounds.max_deg) / tau);
-      const double lo = patch.exempt[f][static_cast<std::size_t>(k)] ? 0.0 : std::exp((bounds.min_deg - theta) / tau);
+      const double lo = patch.exempt[f][static_cast<std::size_t>(k)] ? 0.0
+                        : lo_over_hi > 1e-200 && hi > 1e-200 ? lo_over_hi / hi  // (a tiny tau: both exponentials)
+                                                             : std::exp((bounds.min_deg - theta) / tau);
       energy += hi + lo;
       if (!grad) continue;
       const double de = (hi - lo) / tau * kDeg;  // dE / dtheta (theta in radians)

@@ -15,6 +15,10 @@ Sign orient2d(const Point2& a, const Point2& b, const Point2& c);
 /// far a rounded point lies from a line, never a topological decision (use orient2d for those).
 double orient2d_value(const Point2& a, const Point2& b, const Point2& c);
 
+/// det[b-a, c-a] in doubles, with `error` set to a bound on |value - exact| (the orient2d filter's):
+/// lets a measure compared with a threshold skip orient2d_value when the bound already decides.
+double orient2d_estimate(const Point2& a, const Point2& b, const Point2& c, double& error);
+
 /// Positive when d lies strictly inside the circle through a, b, c (given counter-clockwise),
 /// Zero when cocircular, Negative outside. For clockwise a, b, c the sign is reversed.
 Sign incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
