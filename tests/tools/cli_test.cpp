@@ -252,6 +252,25 @@ TEST(Bounds, AnInputCornerNoMeshCanMeetIsNamedAndTheBestMeshIsStillWritten) {
   EXPECT_EQ(ok.err.find("unsatisfiable"), std::string::npos) << ok.err;
 }
 
+TEST(Notes, FeaturesThatDecideTheCountAreToldEarlyUnlessQuiet) {
+  // A 1 x 0.001 strip at a 10-vertex request: its features ask for hundreds of vertices.
+  const std::string poly = out("strip.poly");
+  std::ofstream(poly) << "4 2 0 0\n1 0 0\n2 1 0\n3 1 0.001\n4 0 0.001\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n";
+  const CliRun r = acute("mesh " + quoted(poly) + " -o " + quoted(out("strip.off")) + " --vertices 10", "strip");
+  EXPECT_EQ(r.code, 0) << r.err;
+  const auto note = r.err.find("acute: note: the domain's small features need");
+  EXPECT_NE(note, std::string::npos) << r.err;
+  EXPECT_LT(note, r.err.find("acute: warning: the mesh has")) << "the note comes before the end: " << r.err;
+  // -q: nothing on stderr, the same exit status; --json with -q still reports the figures.
+  const CliRun q = acute("mesh " + quoted(poly) + " -o " + quoted(out("strip_q.off")) + " --vertices 10 -q", "strip_q");
+  EXPECT_EQ(q.code, 0);
+  EXPECT_EQ(q.err, "");
+  const CliRun j = acute("mesh " + quoted(poly) + " -o " + quoted(out("strip_j.off")) + " --vertices 10 -q --json", "strip_j");
+  EXPECT_EQ(j.code, 0);
+  EXPECT_NE(j.out.find("\"n_triangles\""), std::string::npos) << j.out;
+  EXPECT_EQ(j.out.find("\"n_triangles\": 0"), std::string::npos) << j.out;
+}
+
 TEST(Progress, NeverInStderrThatIsNotATerminal) {
   CliRun r = acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_p1.off")) + " --vertices 800", "p_mesh");
   ASSERT_LE(r.code, 1) << r.err;
