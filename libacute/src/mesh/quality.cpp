@@ -182,10 +182,22 @@ std::vector<ForcedCorner> collect_forced(const Pslg& g, double min_angle_deg,
 
 /// Mesh vertices used by faces, sorted by position (for exact coordinate look-ups).
 std::vector<VertexHandle> used_vertices_by_position(const Mesh& mesh) {
-  std::vector<VertexHandle> vs;
+  // Sorted as (x, y, index) copies, not handles that look their points up: the same order as a
+  // stable sort of the handles by position, at a third of the time on a million vertices.
+  struct Keyed {
+    double x, y;
+    int idx;
+  };
+  std::vector<Keyed> keyed;
+  keyed.reserve(mesh.n_vertices());
   for (auto vh : mesh.vertices())
-    if (!mesh.is_isolated(vh)) vs.push_back(vh);
-  std::stable_sort(vs.begin(), vs.end(), [&](VertexHandle a, VertexHandle b) { return lex_less(point2(mesh, a), point2(mesh, b)); });
+    if (!mesh.is_isolated(vh)) keyed.push_back({mesh.point(vh)[0], mesh.point(vh)[1], vh.idx()});
+  std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.idx < b.idx;
+  });
+  std::vector<VertexHandle> vs;
+  vs.reserve(keyed.size());
+  for (const Keyed& k : keyed) vs.emplace_back(k.idx);
   return vs;
 }
 
