@@ -720,9 +720,10 @@ class Repairer {
       const double h = detail::movable_edge_median(sub0);
       joint_first = true;
       for (double scale : {1.0, 0.8, 0.65})
-        attempt(kRemesh, [&, scale](Mesh& sub) { return detail::remesh_region(sub, scale * h, ++remesh_seed_); });
+        attempt(kRemesh, [&, scale, h](Mesh& sub) { return detail::remesh_region(sub, scale * h, ++remesh_seed_); });
       joint_first = false;
     }
+    // (The queued operations run here: what they capture by reference must live at function scope.)
     std::stable_sort(pending.begin(), pending.end(), [&](const Pending& x, const Pending& y) { return wins_[x.kind] > wins_[y.kind]; });
     for (const Pending& c : pending) run(c.kind, c.joint_first, c.operation);
   }
