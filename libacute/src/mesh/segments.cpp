@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <vector>
 #include <limits>
 
@@ -206,9 +207,10 @@ double line_deviation(const std::array<Point2, 2>& ends, const Point2& p) {
 
 namespace {
 
-/// line_deviation(ends, p) <= limit, from the filtered determinant when its error bound decides
-/// (almost always: a relocation asks this of every trial point on a segment), else exactly.
-bool deviation_at_most(const std::array<Point2, 2>& ends, const Point2& p, double limit) {
+/// Whether line_deviation(ends, p) <= limit, decided from the filtered determinant alone (almost
+/// always: a relocation asks this of every trial point on a segment); empty when its error bound
+/// leaves it open, for the caller's exact test.
+std::optional<bool> deviation_within(const std::array<Point2, 2>& ends, const Point2& p, double limit) {
   const auto& [a, b] = ends;
   double error = 0;
   const double value = std::fabs(predicates::orient2d_estimate(a, b, p, error));
@@ -216,12 +218,15 @@ bool deviation_at_most(const std::array<Point2, 2>& ends, const Point2& p, doubl
   constexpr double kSlack = 1 + 0x1p-48;  // covers the roundings of the sums and quotients below
   if ((value + error) * kSlack / len2 <= limit) return true;
   if ((value - error) / (len2 * kSlack) > limit * kSlack) return false;
-  return line_deviation(ends, p) <= limit;
+  return std::nullopt;
 }
 
 }  // namespace
 
-bool close_enough_to_line(const std::array<Point2, 2>& ends, const Point2& p) { return deviation_at_most(ends, p, kMaxSegmentDeviation); }
+bool close_enough_to_line(const std::array<Point2, 2>& ends, const Point2& p) {
+  if (const auto decided = deviation_within(ends, p, kMaxSegmentDeviation)) return *decided;
+  return line_deviation(ends, p) <= kMaxSegmentDeviation;
+}
 
 Point2 snap_to_line(const std::array<Point2, 2>& ends, const Point2& q, const Point2* lo, const Point2* hi) {
   const auto& [a, b] = ends;
@@ -229,7 +234,7 @@ Point2 snap_to_line(const std::array<Point2, 2>& ends, const Point2& q, const Po
   if (!(d.squaredNorm() > 0) || !std::isfinite(q.x()) || !std::isfinite(q.y())) return q;
   constexpr double inf = std::numeric_limits<double>::infinity();
   const bool q_in_bracket = in_bracket(ends, q, lo, hi);
-  if (q_in_bracket && deviation_at_most(ends, q, kGoodEnough)) return q;
+  if (q_in_bracket && deviation_within(ends, q, kGoodEnough) == true) return q;  // else the exact test below
   Point2 best = q;
   double best_dev = q_in_bracket ? line_deviation(ends, q) : inf;
   if (best_dev <= kGoodEnough) return q;

@@ -39,10 +39,8 @@ double orient2d_estimate(const Point2& a, const Point2& b, const Point2& c, doub
 }
 
 Sign orient2d(const Point2& a, const Point2& b, const Point2& c) {
-  const double left = (b.x() - a.x()) * (c.y() - a.y());
-  const double right = (b.y() - a.y()) * (c.x() - a.x());
-  const double det = left - right;
-  const double bound = detail::kOrient2dBound * (std::fabs(left) + std::fabs(right));
+  double bound = 0;
+  const double det = orient2d_estimate(a, b, c, bound);
   // Branch-free sign when certified: the only branch (to the exact stage) is almost never taken,
   // so it predicts well even when the signs themselves are random.
   if (std::fabs(det) > bound) return static_cast<Sign>(1 - 2 * static_cast<int>(std::signbit(det)));
