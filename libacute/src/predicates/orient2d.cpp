@@ -31,6 +31,8 @@ double orient2d_value(const Point2& a, const Point2& b, const Point2& c) {
   return detail::difference(detail::product(bax, cay), detail::product(bay, cax)).estimate();
 }
 
+// The same arithmetic as orient2d's filter below, which keeps its own copy: calling this from
+// orient2d (an out-parameter through memory) made it 50% slower (predicates_bench 6.3 ns vs 4.2).
 double orient2d_estimate(const Point2& a, const Point2& b, const Point2& c, double& error) {
   const double left = (b.x() - a.x()) * (c.y() - a.y());
   const double right = (b.y() - a.y()) * (c.x() - a.x());
@@ -39,8 +41,10 @@ double orient2d_estimate(const Point2& a, const Point2& b, const Point2& c, doub
 }
 
 Sign orient2d(const Point2& a, const Point2& b, const Point2& c) {
-  double bound = 0;
-  const double det = orient2d_estimate(a, b, c, bound);
+  const double left = (b.x() - a.x()) * (c.y() - a.y());
+  const double right = (b.y() - a.y()) * (c.x() - a.x());
+  const double det = left - right;
+  const double bound = detail::kOrient2dBound * (std::fabs(left) + std::fabs(right));
   // Branch-free sign when certified: the only branch (to the exact stage) is almost never taken,
   // so it predicts well even when the signs themselves are random.
   if (std::fabs(det) > bound) return static_cast<Sign>(1 - 2 * static_cast<int>(std::signbit(det)));
