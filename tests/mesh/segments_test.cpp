@@ -44,6 +44,23 @@ TEST(CloseEnoughToLine, agrees_with_the_exact_deviation) {
   EXPECT_GT(far, 0);
 }
 
+// A 7e-3 long slanted wall at -1000 (stress seed 245): a rounded point is ~1e-11 of its length off
+// the line, and exact points recur every few 1e-5 along it. A snap that went for the most exact
+// point within reach moved a split back onto the vertex it replaced (a strip apex triangle that
+// could never be made isosceles); the snap must stay where it was asked to be.
+TEST(SnapToLine, stays_within_a_few_ulps_of_the_request_when_a_nearby_double_is_close_enough) {
+  const std::array<Point2, 2> ends{Point2(-998.12655105786746, -998.81185777629014), Point2(-998.12313157974916, -998.8180326445206)};
+  const double len = (ends[1] - ends[0]).norm(), ulp = std::nextafter(1024.0, 0.0) - std::nextafter(std::nextafter(1024.0, 0.0), 0.0);
+  double worst_move = 0;
+  for (int i = 1; i < 200; ++i) {
+    const Point2 q = ends[0] + (i / 200.0) * (ends[1] - ends[0]);
+    const Point2 snapped = project_on_line(ends, q);
+    EXPECT_LE(line_deviation(ends, snapped), kMaxSegmentDeviation);
+    worst_move = std::max(worst_move, (snapped - q).norm());
+  }
+  EXPECT_LE(worst_move, 512 * ulp) << "of a segment " << len << " long";
+}
+
 TEST(SnapToLine, keeps_a_point_already_on_the_line) {
   const std::array<Point2, 2> ends{Point2(0, 0), Point2(4, 2)};
   EXPECT_EQ(snap_to_line(ends, Point2(1, 0.5)), Point2(1, 0.5));

@@ -122,17 +122,19 @@ bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, con
     out = c;
     return true;
   };
-  if (m_hi - m_lo + 1 < 2 * static_cast<i128>(r_max)) {
-    // Fewer columns than line offsets to try: walk the columns, the nearest to the line first.
-    // The offset loop below took 65,536 rounds per failed snap (most of the fuzz_mesher timeout).
+  // The lattice points of columns [from, to] whose line offset is at most r_limit: the most exact
+  // first, then the nearest to q. The offsets step by dj1 from column to column (modulo period).
+  auto try_columns = [&](i128 from, i128 to, std::int64_t r_limit) {
     thread_local std::vector<std::pair<std::int64_t, std::int64_t>> columns;  // (rank of |res|, m)
     columns.clear();
-    for (auto m = static_cast<std::int64_t>(m_lo); m <= static_cast<std::int64_t>(m_hi); ++m) {
-      std::int64_t res = period == 1 ? 0 : static_cast<std::int64_t>(((static_cast<i128>(m) * dj1) % period + period) % period);
-      if (2 * res > period) res -= period;
+    const std::int64_t step = period == 1 ? 0 : static_cast<std::int64_t>(((static_cast<i128>(dj1) % period) + period) % period);
+    std::int64_t res0 = period == 1 ? 0 : static_cast<std::int64_t>(((from * dj1) % period + period) % period);  // in [0, period)
+    for (auto m = static_cast<std::int64_t>(from); m <= static_cast<std::int64_t>(to); ++m) {
+      std::int64_t res = 2 * res0 > period ? res0 - period : res0;
       const std::int64_t mag = res < 0 ? -res : res;
-      if (mag > r_max) continue;
-      columns.emplace_back(2 * mag + (res < 0), m);  // as the offset loop: r before -r
+      if (mag <= r_limit) columns.emplace_back(2 * mag + (res < 0), m);  // as the offset loop: r before -r
+      res0 += step;
+      if (res0 >= period) res0 -= period;
     }
     std::sort(columns.begin(), columns.end(), [&](const auto& x, const auto& y) {
       if (x.first != y.first) return x.first < y.first;
@@ -142,7 +144,17 @@ bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, con
     for (const auto& [rank, m] : columns)
       if (accept(m, (rank & 1) ? -(rank / 2) : rank / 2)) return true;
     return false;
-  }
+  };
+  // Near q first: within kWindow columns, a point within kAcceptable (as the window walk would
+  // find). The most exact point of the whole reach can be 1/64 of the segment away: a split there
+  // once landed back on the vertex it replaced (a strip's apex triangle never made isosceles).
+  const double r_ok = std::floor(kAcceptable * len2 / (uk * uj * static_cast<double>(g)));
+  if (try_columns(std::max<i128>(m_lo, static_cast<i128>(qk) - kWindow), std::min<i128>(m_hi, static_cast<i128>(qk) + kWindow),
+                               static_cast<std::int64_t>(std::min(r_ok, 0x1p62))))
+    return true;
+  // Fewer columns than line offsets to try: walk the columns, the nearest to the line first (the
+  // offset loop below took 65,536 rounds per failed snap: most of the fuzz_mesher timeout).
+  if (m_hi - m_lo + 1 < 2 * static_cast<i128>(r_max)) return try_columns(m_lo, m_hi, r_max);
   for (std::int64_t r = 0; r <= r_max; ++r) {
     for (const std::int64_t res : {r, -r}) {
       if (r == 0 && res != r) continue;
