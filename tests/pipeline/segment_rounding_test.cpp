@@ -37,6 +37,22 @@ TEST(SegmentRounding, nearly_vertical_segment_few_ulps_wide) { expect_segments_r
 
 TEST(SegmentRounding, tiny_notch_far_from_origin) { expect_segments_read_back("tiny_notch_far_from_origin"); }
 
+// A 12-degree strip at an input corner of a 7e-3 wall at -1000: its apex triangle must be made
+// isosceles by re-splitting the far wall at the near radius, and the segment snap used to put that
+// split back on the vertex it replaced (the most exact double within 1/64 of the wall): 160
+// iterations on one 108-degree triangle. Now the bounds are met, well within the time limit.
+TEST(SegmentRounding, strip_apex_on_a_short_wall_far_from_origin_meets_the_bounds) {
+  const std::string name = "strip_apex_on_a_short_wall_far_from_origin";
+  const Domain domain = io::read_poly(std::string(acute::test::test_data_dir()) + "/regressions/" + name + ".poly");
+  MeshOptions options;
+  options.target_vertices = 300;
+  options.time_limit_s = 30;  // a safety net: the run takes under a second
+  const MeshResult result = generate_mesh(domain, options);
+  EXPECT_EQ(result.status, MeshStatus::Ok) << result.remaining.size() << " bad triangles left";
+  EXPECT_EQ(test::verify_conforms(result.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
+  EXPECT_EQ(test::verify_segment_chains(result.mesh, domain, 1e-10), "");
+}
+
 // Sides ~1.1e-7 long at -1000 (an ulp is 1e-6 of them): repeated midpoint splits of the notch
 // pieces either land within kMaxSegmentDeviation of the side's line, in order, or are refused.
 TEST(SegmentRounding, tiny_notch_far_from_origin_splits_stay_on_the_sides_or_are_refused) {
