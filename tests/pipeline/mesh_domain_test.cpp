@@ -26,5 +26,21 @@ TEST(MeshDomain, obj_polyline_is_kept_as_a_chain_of_edges_and_the_bounds_are_met
   EXPECT_GE(r.mesh.n_vertices(), 150u);
 }
 
+// A 32.7-degree sector at an input corner (a CG:SHOP exterior instance) holds one triangle: its base
+// angles stay below 90 only while the first vertices along its two walls are nearly as far from the
+// corner. At ~2,000 vertices they were 2.40 and 2.85 away (a right angle at the nearer one, whose
+// other side then had two right triangles) and no move or split mended it in 150 iterations; the
+// repair now also equalises the first radii of sectors narrower than twice the min bound.
+TEST(MeshDomain, a_sector_narrower_than_twice_the_min_bound_gets_an_apex_triangle_within_the_bounds) {
+  const std::string path = std::string(acute::test::meshes_dir()) + "/cgshop/simple-polygon-exterior_250_a97729dd.instance.json";
+  const Domain domain = io::read_domain(path);
+  MeshOptions options;
+  options.target_vertices = 2000;
+  options.time_limit_s = 120;  // a safety net: the run takes about 15 s
+  const MeshResult r = generate_mesh(domain, options);
+  EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
+  EXPECT_EQ(test::verify_conforms(r.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
+}
+
 }  // namespace
 }  // namespace acute

@@ -709,9 +709,15 @@ class Repairer {
         for (int rings : {3, 5}) attempt(kHub, [&, vh, rings](Mesh& sub) { return detail::rebuild_hub(sub, vh, rings); });
       }
     constexpr double kPi = 3.14159265358979323846;
-    for (auto vh : apexes)
-      if (is_input(sub0, vh) && static_cast<std::size_t>(vh.idx()) < forced.size() && forced[static_cast<std::size_t>(vh.idx())])
+    for (auto vh : apexes) {
+      if (!is_input(sub0, vh)) continue;
+      if (static_cast<std::size_t>(vh.idx()) < forced.size() && forced[static_cast<std::size_t>(vh.idx())])
         attempt(kEqualiseApexes, [&, vh](Mesh& sub) { return detail::equalise_strip_apexes(sub, vh, bounds_.min_deg * kPi / 180); });
+      // A sector narrower than twice the min bound holds one triangle: its base angles stay below
+      // the max bound only while its walls' first radii nearly agree (a 32.7-degree sector of a
+      // CG:SHOP instance: radii 2.40 and 2.85 gave a right angle no single move could undo).
+      attempt(kEqualiseApexes, [&, vh](Mesh& sub) { return detail::equalise_strip_apexes(sub, vh, 2 * bounds_.min_deg * kPi / 180); });
+    }
     joint_first = false;
 
     // A cluster that has resisted every single operation: the region re-sampled from scratch at
