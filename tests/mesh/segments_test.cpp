@@ -50,7 +50,7 @@ TEST(CloseEnoughToLine, agrees_with_the_exact_deviation) {
 // could never be made isosceles); the snap must stay where it was asked to be.
 TEST(SnapToLine, stays_within_a_few_ulps_of_the_request_when_a_nearby_double_is_close_enough) {
   const std::array<Point2, 2> ends{Point2(-998.12655105786746, -998.81185777629014), Point2(-998.12313157974916, -998.8180326445206)};
-  const double len = (ends[1] - ends[0]).norm(), ulp = std::nextafter(1024.0, 0.0) - std::nextafter(std::nextafter(1024.0, 0.0), 0.0);
+  const double len = (ends[1] - ends[0]).norm(), ulp = std::nextafter(998.0, 1024.0) - 998.0;  // the ulp of both coordinates
   double worst_move = 0;
   for (int i = 1; i < 200; ++i) {
     const Point2 q = ends[0] + (i / 200.0) * (ends[1] - ends[0]);

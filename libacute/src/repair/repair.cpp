@@ -709,14 +709,24 @@ class Repairer {
         for (int rings : {3, 5}) attempt(kHub, [&, vh, rings](Mesh& sub) { return detail::rebuild_hub(sub, vh, rings); });
       }
     constexpr double kPi = 3.14159265358979323846;
+    // Strips (sectors below the min bound, at forced corners) get isosceles apex triangles; so do
+    // sectors below twice the min bound, which hold one triangle whose base angles stay below the
+    // max bound only while its walls' first radii nearly agree (a 32.7-degree sector of a CG:SHOP
+    // instance: radii 2.40 and 2.85 gave a right angle no single move could undo). The strips-only
+    // candidate is queued only where it differs from the other (a corner with both kinds).
+    const double strip_below = bounds_.min_deg * kPi / 180, one_triangle_below = 2 * strip_below;
     for (auto vh : apexes) {
       if (!is_input(sub0, vh)) continue;
-      if (static_cast<std::size_t>(vh.idx()) < forced.size() && forced[static_cast<std::size_t>(vh.idx())])
-        attempt(kEqualiseApexes, [&, vh](Mesh& sub) { return detail::equalise_strip_apexes(sub, vh, bounds_.min_deg * kPi / 180); });
-      // A sector narrower than twice the min bound holds one triangle: its base angles stay below
-      // the max bound only while its walls' first radii nearly agree (a 32.7-degree sector of a
-      // CG:SHOP instance: radii 2.40 and 2.85 gave a right angle no single move could undo).
-      attempt(kEqualiseApexes, [&, vh](Mesh& sub) { return detail::equalise_strip_apexes(sub, vh, 2 * bounds_.min_deg * kPi / 180); });
+      bool strip = false, one_triangle = false;
+      for (const SegmentSector& sector : segment_sectors(sub0, vh)) {
+        strip = strip || sector.radians < strip_below;
+        one_triangle = one_triangle || (sector.radians >= strip_below && sector.radians < one_triangle_below);
+      }
+      const bool forced_strip = strip && static_cast<std::size_t>(vh.idx()) < forced.size() && forced[static_cast<std::size_t>(vh.idx())];
+      if (forced_strip && one_triangle)
+        attempt(kEqualiseApexes, [&, vh](Mesh& sub) { return detail::equalise_strip_apexes(sub, vh, strip_below); });
+      if (strip || one_triangle)
+        attempt(kEqualiseApexes, [&, vh](Mesh& sub) { return detail::equalise_strip_apexes(sub, vh, one_triangle_below); });
     }
     joint_first = false;
 
