@@ -42,5 +42,20 @@ TEST(MeshDomain, a_sector_narrower_than_twice_the_min_bound_gets_an_apex_triangl
   EXPECT_EQ(test::verify_conforms(r.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
 }
 
+// An input point 1.5 above a side 6,650 long (a CG:SHOP point set). A stuck cluster there was
+// re-sampled at the region's median spacing (110), which divided the side at 110 below the point:
+// one 178-degree triangle for 200 iterations. The re-sampling now grades its spacing down to the
+// features that stay (the point's distance to the side).
+TEST(MeshDomain, an_input_point_close_to_a_long_side_meets_the_bounds) {
+  const std::string path = std::string(acute::test::meshes_dir()) + "/cgshop/point-set_60_27bc003d.instance.json";
+  const Domain domain = io::read_domain(path);
+  MeshOptions options;
+  options.target_vertices = 2000;
+  options.time_limit_s = 120;  // a safety net: the run takes about 3 s
+  const MeshResult r = generate_mesh(domain, options);
+  EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
+  EXPECT_EQ(test::verify_conforms(r.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
+}
+
 }  // namespace
 }  // namespace acute

@@ -182,6 +182,35 @@ TEST(EqualiseStripApexes, the_apex_triangles_become_isosceles_and_their_wall_ver
   test::expect_commit_keeps_the_mesh(h.mesh, h.region, sub, h.area);
 }
 
+TEST(EqualiseStripApexes, outward_moves_the_nearer_wall_vertex_to_the_farther_radius) {
+  // A 45-degree corner holds one triangle at its apex. Outward, the nearer of its walls' first
+  // vertices is replaced by one at the farther's radius (inward, the farther would move in).
+  Mesh mesh = cvt_mesh(test::sharp_wedge(45), 400);
+  const double area = test::total_area(mesh);
+  const VertexHandle apex_big = vertex_at(mesh, Point2(0, 0));
+  ASSERT_TRUE(apex_big.is_valid());
+  detail::Region region;
+  ASSERT_TRUE(detail::extract_region(mesh, vertices_near(mesh, apex_big, 4.0), forced_corner_vertices(mesh, 30), region));
+  Mesh sub = region.sub;
+  const VertexHandle apex = vertex_at(sub, Point2(0, 0));
+  ASSERT_TRUE(apex.is_valid());
+  auto first_radius_towards = [&](double deg) -> std::pair<HalfedgeHandle, double> {
+    for (auto h : sub.voh_range(apex))
+      if (is_constrained(sub, sub.edge_handle(h)) && point2(sub, sub.to_vertex_handle(h)).normalized().dot(polar(1, deg)) > 1 - 1e-9)
+        return {h, point2(sub, sub.to_vertex_handle(h)).norm()};
+    return {HalfedgeHandle(), 0.0};
+  };
+  // The 45-degree wall's first vertex made the nearer: cut at 0.9 of the smaller radius.
+  const double r0 = first_radius_towards(0).second, r45 = first_radius_towards(45).second;
+  ASSERT_GT(r0, 0);
+  ASSERT_GT(r45, 0);
+  ASSERT_TRUE(split_edge(sub, sub.edge_handle(first_radius_towards(45).first), polar(0.9 * std::min(r0, r45), 45)).is_valid());
+  ASSERT_TRUE(detail::equalise_strip_apexes(sub, apex, 2 * kStrip, /*outward=*/true));
+  EXPECT_NEAR(first_radius_towards(0).second, r0, 1e-12 * r0) << "the farther stays";
+  EXPECT_NEAR(first_radius_towards(45).second, r0, 1e-12 * r0) << "the nearer moved out to its radius";
+  test::expect_commit_keeps_the_mesh(mesh, region, sub, area);
+}
+
 TEST(EqualiseStripApexes, strips_side_by_side_sharing_a_wall_all_end_isosceles) {
   // Three interior segments from the centre of a square at 0, 10 and 22 degrees: two strips share
   // the 10-degree wall (as in clusters.poly under a 35-degree bound). Removing one strip's far wall

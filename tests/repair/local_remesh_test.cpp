@@ -143,6 +143,29 @@ TEST(RemeshRegion, spacing_far_below_the_region_is_refused_and_leaves_it_unchang
   EXPECT_TRUE(detail::remesh_region(sub, h, 7)) << "at its own spacing the region is re-sampled";
 }
 
+TEST(RemeshRegion, spacing_grades_down_to_an_input_point_close_to_a_segment) {
+  // An input point 0.005 above the bottom side, in a region of spacing about 0.05: re-sampled at one
+  // spacing, the side below it was divided at 0.05 and the point's triangles were flat (CG:SHOP
+  // point-set_60_27bc003d: a point 1.5 above a wall, a remeshed region at spacing 110, one
+  // 178-degree triangle). Graded, the point's edges are a few times its distance to the side.
+  Domain d = square4();
+  d.points.push_back(Point2(2, 0.005));
+  Mesh mesh = cvt_mesh(d, 400);
+  const double area = test::total_area(mesh);
+  detail::Region region = region_near(mesh, Point2(2, 0.3), 0.6);
+  Mesh sub = region.sub;
+  const double h = detail::movable_edge_median(sub);
+  ASSERT_GT(h, 0.04);
+  ASSERT_TRUE(detail::remesh_region(sub, h, 7));
+  const VertexHandle point = vertex_at(sub, Point2(2, 0.005));
+  ASSERT_TRUE(point.is_valid());
+  double longest = 0;
+  for (auto w : sub.vv_range(point)) longest = std::max(longest, (point2(sub, w) - Point2(2, 0.005)).norm());
+  EXPECT_LT(longest, 0.3 * h) << "spacing " << h;
+  Mesh big = mesh;
+  expect_commit_keeps_the_mesh(big, region, sub, area);
+}
+
 TEST(RepairAcute, sharp_wedges_meet_the_bounds) {
   for (double apex_deg : {8.0, 15.0, 25.0}) {
     SCOPED_TRACE(apex_deg);

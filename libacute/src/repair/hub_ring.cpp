@@ -71,7 +71,7 @@ double hub_ring_reach(const Mesh& mesh, VertexHandle apex, double strip_below) {
 }
 
 // (The CVT start slides wall vertices freely: its strip apex triangles are seldom isosceles.)
-bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below) {
+bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below, bool outward) {
   const Point2 c = point2(sub, apex);
   // One strip per pass, the sectors found afresh: removing a wall vertex re-triangulates the apex's
   // star, so the spokes of a strip found before may be gone (two strips side by side share a wall).
@@ -83,18 +83,23 @@ bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below) {
       HalfedgeHandle near_spoke = strip.first, far_spoke = strip.last;
       double r_near = first_radius(sub, near_spoke), r_far = first_radius(sub, far_spoke);
       if (r_far < r_near) std::swap(near_spoke, far_spoke), std::swap(r_near, r_far);
+      // (Outward, the roles swap: the vertex replaced is the nearer, the radius kept the farther.)
+      if (outward) std::swap(near_spoke, far_spoke), std::swap(r_near, r_far);
       const VertexHandle far_vertex = sub.to_vertex_handle(far_spoke);
-      if (is_input(sub, far_vertex) || r_far <= r_near * (1 + 1e-9)) continue;
+      const double ratio = outward ? r_near / r_far : r_far / r_near;
+      if (is_input(sub, far_vertex) || ratio <= 1 + 1e-9 || (outward && ratio >= 1.5)) continue;
       const Point2 u = (point2(sub, far_vertex) - c) / r_far;
-      if (r_far < 1.5 * r_near) {
+      if (ratio < 1.5) {
         if (!remove_vertex(sub, far_vertex)) return false;
         // The wall's spoke now runs to the next vertex along it.
         far_spoke = HalfedgeHandle();
         for (auto spoke : sub.voh_range(apex))
           if (is_constrained(sub, sub.edge_handle(spoke)) && (point2(sub, sub.to_vertex_handle(spoke)) - c).normalized().dot(u) > 1 - 1e-12) far_spoke = spoke;
         if (!far_spoke.is_valid()) return false;
+        if (outward && first_radius(sub, far_spoke) <= r_near * (1 + 1e-9)) return false;  // the next wall vertex is nearer
       }
-      // Radii only ever drop to one already at a wall, so strips sharing walls settle in a few passes.
+      // Radii only ever drop (outward: rise) to one already at a wall, so strips sharing walls
+      // settle in a few passes.
       if (!split_edge(sub, sub.edge_handle(far_spoke), c + r_near * u).is_valid()) return false;
       changed = true;
       edited = 1;

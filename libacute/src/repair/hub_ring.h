@@ -19,7 +19,9 @@ namespace acute::detail {
 /// triangle: the farther of its walls' first vertices is replaced by one at the nearer's radius.
 /// With a strip angle theta the base angles are 90 - theta / 2, so radii differing by a factor
 /// below cos(theta) make the triangle obtuse. False when nothing changed or an edit failed.
-bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below);
+/// outward: the nearer vertex is replaced by one at the farther's radius instead (for a sector
+/// that holds one triangle, whose nearer wall vertex may be left with too few triangles beside it).
+bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below, bool outward = false);
 
 /// The radius of the disk around `apex` that rebuild_hub_ring would change (1.1 times the largest
 /// first radius of a ringed sector's walls), 0 when no wide sector at apex has a strip across a wall.

@@ -16,24 +16,102 @@ namespace acute::detail {
 
 namespace {
 
-/// Divides constrained, non-frozen edges longer than 1.5 h into equal pieces of about h.
-bool divide_segments(Mesh& sub, double h) {
-  std::vector<std::array<VertexHandle, 2>> long_edges;
+/// The spacing a re-sampled region aims at: h, finer near the features that stay, growing away
+/// from each at kGrading per unit length: s(x) = min(h, min_v lfs(v) + kGrading |x - v|) over the
+/// vertices v left after the removal (Input vertices and the frozen ring), lfs(v) the distance
+/// from v to the nearest other vertex or wall (constrained or border edge) not at v. Without it a
+/// region holding an input point 1e-3 of h from a segment was re-sampled at h along that segment,
+/// leaving one flat triangle no later step could open.
+class Spacing {
+ public:
+  static constexpr double kGrading = 0.5;
+
+  Spacing(const Mesh& sub, double h) : h_(h) {
+    std::vector<std::array<Point2, 2>> walls;
+    std::vector<std::array<VertexHandle, 2>> ends;
+    for (auto eh : sub.edges())
+      if (!sub.status(eh).deleted() && (is_constrained(sub, eh) || sub.is_boundary(eh))) {
+        const auto heh = sub.halfedge_handle(eh, 0);
+        ends.push_back({sub.from_vertex_handle(heh), sub.to_vertex_handle(heh)});
+        walls.push_back({point2(sub, ends.back()[0]), point2(sub, ends.back()[1])});
+      }
+    std::vector<VertexHandle> vertices;
+    for (auto vh : sub.vertices())
+      if (!sub.status(vh).deleted()) vertices.push_back(vh);
+    for (auto v : vertices) {
+      const Point2 p = point2(sub, v);
+      double d2 = h * h;
+      for (auto w : vertices)
+        if (w != v) d2 = std::min(d2, (point2(sub, w) - p).squaredNorm());
+      for (std::size_t k = 0; k < walls.size(); ++k)
+        if (ends[k][0] != v && ends[k][1] != v) d2 = std::min(d2, distance2_to_segment(p, walls[k][0], walls[k][1]));
+      const double lfs = std::sqrt(d2);
+      if (lfs < h) sites_.push_back({p, lfs});
+    }
+  }
+
+  double at(const Point2& q) const {
+    double s = h_;
+    for (const Site& site : sites_) s = std::min(s, site.lfs + kGrading * (q - site.p).norm());
+    return s;
+  }
+  double cap() const { return h_; }
+
+  /// A lower bound of s over triangle p (the distance from each site to the triangle).
+  double lower_bound(const std::array<Point2, 3>& p) const {
+    double s = h_;
+    for (const Site& site : sites_) {
+      const double a0 = signed_area2(p[0], p[1], site.p), a1 = signed_area2(p[1], p[2], site.p), a2 = signed_area2(p[2], p[0], site.p);
+      const bool inside = (a0 >= 0 && a1 >= 0 && a2 >= 0) || (a0 <= 0 && a1 <= 0 && a2 <= 0);
+      const double d = inside ? 0.0
+                              : std::sqrt(std::min({distance2_to_segment(site.p, p[0], p[1]), distance2_to_segment(site.p, p[1], p[2]),
+                                                    distance2_to_segment(site.p, p[2], p[0])}));
+      s = std::min(s, site.lfs + kGrading * d);
+    }
+    return s;
+  }
+
+ private:
+  struct Site {
+    Point2 p;
+    double lfs;
+  };
+  double h_;
+  std::vector<Site> sites_;  ///< only the vertices finer than h
+};
+
+/// Divides constrained, non-frozen edges into pieces of about the local spacing (the integral of
+/// 1 / s along the edge rounded, at least 2, for edges where it exceeds 1.5).
+bool divide_segments(Mesh& sub, const Spacing& spacing) {
+  std::vector<std::array<VertexHandle, 2>> edges;
   for (auto eh : sub.edges()) {
     if (sub.status(eh).deleted() || !is_constrained(sub, eh) || sub.data(eh).frozen) continue;
     const auto heh = sub.halfedge_handle(eh, 0);
-    const VertexHandle a = sub.from_vertex_handle(heh), b = sub.to_vertex_handle(heh);
-    if ((point2(sub, b) - point2(sub, a)).norm() > 1.5 * h) long_edges.push_back({a, b});
+    edges.push_back({sub.from_vertex_handle(heh), sub.to_vertex_handle(heh)});
   }
+  constexpr int kSteps = 256;
+  std::vector<double> cumulative(kSteps + 1);
   bool changed = false;
-  for (const auto& [a, b] : long_edges) {
+  for (const auto& [a, b] : edges) {
     const Point2 pa = point2(sub, a), pb = point2(sub, b);
-    const int n = std::max(2, static_cast<int>(std::lround((pb - pa).norm() / h)));
+    const double length = (pb - pa).norm();
+    cumulative[0] = 0;
+    for (int k = 0; k < kSteps; ++k)
+      cumulative[k + 1] = cumulative[k] + (length / kSteps) / spacing.at(pa + ((k + 0.5) / kSteps) * (pb - pa));
+    const double total = cumulative[kSteps];
+    if (!(total > 1.5)) continue;
+    const int n = std::max(2, static_cast<int>(std::lround(total)));
     VertexHandle from = a;
+    int step = 0;
     for (int k = 1; k < n; ++k) {
+      // The parameter where the integral reaches k / n of its total (linear within a step).
+      const double target = total * k / n;
+      while (step < kSteps - 1 && cumulative[step + 1] < target) ++step;
+      const double piece = cumulative[step + 1] - cumulative[step];
+      const double t = (step + (piece > 0 ? std::clamp((target - cumulative[step]) / piece, 0.0, 1.0) : 0.5)) / kSteps;
       const auto heh = sub.find_halfedge(from, b);
       if (!heh.is_valid()) break;
-      const VertexHandle m = split_edge(sub, sub.edge_handle(heh), pa + (static_cast<double>(k) / n) * (pb - pa));
+      const VertexHandle m = split_edge(sub, sub.edge_handle(heh), pa + t * (pb - pa));
       if (!m.is_valid()) break;
       from = m;
       changed = true;
@@ -42,53 +120,80 @@ bool divide_segments(Mesh& sub, double h) {
   return changed;
 }
 
-/// Dart throwing inside the current triangles: candidates kept 0.7 h from every vertex and
-/// accepted point, and 0.35 h from every constrained or border edge.
-bool scatter_interior(Mesh& sub, double h, std::mt19937& rng) {
-  struct Dart {
-    Point2 p;
-    VertexHandle corner;  // a vertex of the triangle it was drawn in: the walk starts beside it
+/// Dart throwing inside the current triangles: candidates kept 0.7 of the mean of their spacing
+/// and a point's from every vertex and accepted point, and 0.35 of theirs from every constrained
+/// or border edge. The triangles are first cut in four until each is at most four times an
+/// equilateral mesh's area per vertex at the least spacing over it, so that a graded region gets
+/// its darts where it is fine without drawing millions where it is coarse. Returns false (nothing
+/// inserted) when the region would get more than max_points points; true otherwise, also when no
+/// dart fitted (a channel one triangle wide).
+bool scatter_interior(Mesh& sub, const Spacing& spacing, std::mt19937& rng, double max_points) {
+  auto cell = [](double s) { return 0.5 * std::sqrt(3.0) * s * s; };
+  struct Piece {
+    std::array<Point2, 3> p;
+    VertexHandle corner;  // a vertex of the face it was cut from: the insertion walk starts there
+    double least = 0;     // a lower bound of the spacing over it
   };
-  std::vector<Point2> taken;
+  std::vector<Piece> stack, pieces;
+  for (auto fh : sub.faces())
+    if (!sub.status(fh).deleted()) stack.push_back({face_points(sub, fh), *sub.fv_range(fh).begin()});
+  double points = 0;
+  while (!stack.empty()) {
+    Piece piece = stack.back();
+    stack.pop_back();
+    const auto& p = piece.p;
+    const double area = 0.5 * std::abs(signed_area2(p[0], p[1], p[2]));
+    piece.least = spacing.lower_bound(p);
+    if (area > 4 * cell(piece.least) && piece.least > 1e-3 * spacing.cap()) {
+      const Point2 m01 = 0.5 * (p[0] + p[1]), m12 = 0.5 * (p[1] + p[2]), m20 = 0.5 * (p[2] + p[0]);
+      for (const auto& q : {std::array<Point2, 3>{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m01, m12, m20}})
+        stack.push_back({q, piece.corner});
+      continue;
+    }
+    points += area / cell(spacing.at((p[0] + p[1] + p[2]) / 3.0));
+    if (points > max_points) return false;
+    pieces.push_back(piece);
+  }
+  struct Taken {
+    Point2 p;
+    double s;
+  };
+  std::vector<Taken> taken;
   for (auto vh : sub.vertices())
-    if (!sub.status(vh).deleted()) taken.push_back(point2(sub, vh));
+    if (!sub.status(vh).deleted()) taken.push_back({point2(sub, vh), spacing.at(point2(sub, vh))});
   std::vector<std::array<Point2, 2>> walls;
   for (auto eh : sub.edges())
     if (!sub.status(eh).deleted() && (is_constrained(sub, eh) || sub.is_boundary(eh))) {
       const auto heh = sub.halfedge_handle(eh, 0);
       walls.push_back({point2(sub, sub.from_vertex_handle(heh)), point2(sub, sub.to_vertex_handle(heh))});
     }
-  const double cell = 0.5 * std::sqrt(3.0) * h * h;  // area per vertex of an equilateral mesh
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<Dart> darts;
-  for (auto fh : sub.faces()) {
-    if (sub.status(fh).deleted()) continue;
-    const auto p = face_points(sub, fh);
-    const double area = 0.5 * std::abs(signed_area2(p[0], p[1], p[2]));
-    const int tries = 1 + static_cast<int>(4.0 * area / cell);
-    const VertexHandle corner = *sub.fv_range(fh).begin();
+  std::vector<std::pair<Point2, VertexHandle>> darts;
+  for (const Piece& piece : pieces) {
+    const auto& p = piece.p;
+    // Darts at the density of the least spacing, each kept with the probability (least / s)^2.
+    const int tries = 1 + static_cast<int>(4.0 * 0.5 * std::abs(signed_area2(p[0], p[1], p[2])) / cell(piece.least));
     for (int t = 0; t < tries; ++t) {
       double u = unit(rng), v = unit(rng);
       if (u + v > 1) u = 1 - u, v = 1 - v;
       const Point2 q = p[0] + u * (p[1] - p[0]) + v * (p[2] - p[0]);
+      const double sq = spacing.at(q);
+      if (unit(rng) * sq * sq > piece.least * piece.least) continue;
       bool ok = true;
-      for (const auto& w : taken) ok = ok && (q - w).norm() >= 0.7 * h;
-      for (const auto& w : walls) ok = ok && distance_to_segment(q, w[0], w[1]) >= 0.35 * h;
+      for (const auto& w : taken) ok = ok && (q - w.p).norm() >= 0.35 * (sq + w.s);
+      for (const auto& w : walls) ok = ok && distance_to_segment(q, w[0], w[1]) >= 0.35 * sq;
       if (!ok) continue;
-      taken.push_back(q);
-      darts.push_back({q, corner});
+      taken.push_back({q, sq});
+      darts.emplace_back(q, piece.corner);
     }
   }
-  bool changed = false;
-  for (const auto& d : darts) {
-    const VertexHandle vh = insert_point_from(sub, d.p, d.corner);
-    if (vh.is_valid()) changed = changed || !is_input(sub, vh);
-  }
-  return changed;
+  for (const auto& [q, corner] : darts) insert_point_from(sub, q, corner);
+  return true;
 }
 
-/// Moves every free vertex to the area-weighted centroid of its star's triangle centroids.
-void lloyd_sweeps(Mesh& sub, int sweeps) {
+/// Moves every free vertex to the centroid of its star's triangle centroids, each weighted by its
+/// area and the density s^-4 at its centroid (a CVT's cells grow as the density's -1/4 power).
+void lloyd_sweeps(Mesh& sub, const Spacing& spacing, int sweeps) {
   std::vector<EdgeHandle> queue;
   for (int s = 0; s < sweeps; ++s) {
     for (auto vh : sub.vertices()) {
@@ -97,11 +202,13 @@ void lloyd_sweeps(Mesh& sub, int sweeps) {
       double weight = 0;
       for (auto fh : sub.vf_range(vh)) {
         const auto p = face_points(sub, fh);
-        const double a = std::abs(signed_area2(p[0], p[1], p[2]));
-        c += a * (p[0] + p[1] + p[2]) / 3.0;
+        const Point2 centroid = (p[0] + p[1] + p[2]) / 3.0;
+        const double size = spacing.at(centroid) / spacing.cap();
+        const double a = std::abs(signed_area2(p[0], p[1], p[2])) / (size * size * size * size);
+        c += a * centroid;
         weight += a;
       }
-      if (!(weight > 0)) continue;
+      if (!(weight > 0) || !std::isfinite(weight)) continue;
       c /= weight;
       if (can_relocate(sub, vh, c) != OpVerdict::Ok) continue;
       relocate(sub, vh, c);
@@ -282,7 +389,9 @@ bool remesh_region(Mesh& sub, double h, std::uint32_t seed) {
   if (!(h > 0)) return false;
   // The re-sampled region must stay about the size it is: at a spacing far below the region's
   // extent (the median edge of a cluster around a feature 1e-6 of its size) the darts and segment
-  // pieces would number millions, and dart throwing is quadratic in them.
+  // pieces would number millions, and dart throwing is quadratic in them. A cheap bound at the
+  // uniform spacing first, then the graded count (finer: the spacing only goes down near
+  // features), at most eight times the vertices the region has.
   double points = 0;
   std::size_t vertices = 0;
   for (auto vh : sub.vertices()) vertices += !sub.status(vh).deleted();
@@ -296,17 +405,18 @@ bool remesh_region(Mesh& sub, double h, std::uint32_t seed) {
       const auto heh = sub.halfedge_handle(eh, 0);
       points += (point2(sub, sub.to_vertex_handle(heh)) - point2(sub, sub.from_vertex_handle(heh))).norm() / h;
     }
-  if (!(points <= 4.0 * static_cast<double>(vertices) + 64.0)) return false;
+  if (!(points <= 8.0 * static_cast<double>(vertices) + 128.0)) return false;
   bool removed = false;
   for (int pass = 0; pass < 2; ++pass)
     for (auto vh : sub.vertices())
       if (!sub.status(vh).deleted() && !is_input(sub, vh)) removed = remove_vertex(sub, vh) || removed;
   if (!removed) return false;
   std::mt19937 rng(seed);
-  divide_segments(sub, h);
-  scatter_interior(sub, h, rng);
+  const Spacing spacing(sub, h);
+  divide_segments(sub, spacing);
+  if (!scatter_interior(sub, spacing, rng, 8.0 * static_cast<double>(vertices) + 128.0)) return false;
   make_delaunay(sub);
-  lloyd_sweeps(sub, 4);
+  lloyd_sweeps(sub, spacing, 4);
   return true;
 }
 

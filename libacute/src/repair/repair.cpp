@@ -727,6 +727,10 @@ class Repairer {
         attempt(kEqualiseApexes, [&, vh](Mesh& sub) { return detail::equalise_strip_apexes(sub, vh, strip_below); });
       if (strip || one_triangle)
         attempt(kEqualiseApexes, [&, vh](Mesh& sub) { return detail::equalise_strip_apexes(sub, vh, one_triangle_below); });
+      // Or the nearer wall vertex moved out: moved in, the farther one may keep too few triangles
+      // beside the apex triangle (two on its straight side: a right angle smoothing cannot open).
+      if (one_triangle)
+        attempt(kEqualiseApexes, [&, vh](Mesh& sub) { return detail::equalise_strip_apexes(sub, vh, one_triangle_below, /*outward=*/true); });
     }
     joint_first = false;
 
