@@ -57,5 +57,22 @@ TEST(MeshDomain, an_input_point_close_to_a_long_side_meets_the_bounds) {
   EXPECT_EQ(test::verify_conforms(r.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
 }
 
+// A 90-degree input sector covered by one right triangle (a CG:SHOP exterior instance: an interior
+// segment leaves the boundary at a right angle). Its mend takes two steps, the point on the corner's
+// bisector and then a vertex more for that point's star of four triangles; the two-step search
+// expanded the six best first steps, and six no-ops (smoothing alone, flips the smoothing undid)
+// scored as well as the region and ranked ahead of the bisector point: 150 iterations, 90.000
+// degrees. No-op first steps are no longer expanded.
+TEST(MeshDomain, a_right_angled_input_sector_of_one_triangle_meets_the_bounds) {
+  const std::string path = std::string(acute::test::meshes_dir()) + "/cgshop/simple-polygon-exterior-20_150_7768dd44.instance.json";
+  const Domain domain = io::read_domain(path);
+  MeshOptions options;
+  options.target_vertices = 2000;
+  options.time_limit_s = 120;  // a safety net: the run takes about 3 s
+  const MeshResult r = generate_mesh(domain, options);
+  EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
+  EXPECT_EQ(test::verify_conforms(r.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
+}
+
 }  // namespace
 }  // namespace acute

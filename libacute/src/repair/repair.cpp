@@ -458,8 +458,14 @@ class Repairer {
     }
     for (auto& o : level1)
       if (o.score < best_score) best_score = o.score, best = o.mesh, best_candidate_ = o.candidate, best_kind_ = o.kind;
-    if (!deep || best_score < score(region.sub, region.forced)) return;
+    const Score base = score(region.sub, region.forced);
+    if (!deep || best_score < base) return;
     std::sort(level1.begin(), level1.end(), [](const Outcome& a, const Outcome& b) { return a.score < b.score; });
+    // Outcomes that score as the region did are left out: mostly no-ops (smoothing alone, a flip the
+    // smoothing undid), whose expansion repeats the first level. They crowded out the first step
+    // that mattered (a 90-degree input corner of one right triangle: the bisector point, then a
+    // vertex for its degree-4 star, ranked eighth behind six of them).
+    level1.erase(std::remove_if(level1.begin(), level1.end(), [&](const Outcome& o) { return !(o.score < base) && !(base < o.score); }), level1.end());
     if (level1.size() > 6) level1.resize(6);
     for (const auto& first : level1) {
       if (out_of_time()) break;
