@@ -26,20 +26,27 @@ TEST(MeshDomain, obj_polyline_is_kept_as_a_chain_of_edges_and_the_bounds_are_met
   EXPECT_GE(r.mesh.n_vertices(), 150u);
 }
 
+/// A bundled CG:SHOP instance meshed at ~2,000 vertices meets [30, 90) and conforms (a time limit
+/// of 120 s as a safety net: each run takes a few seconds).
+void expect_cgshop_instance_meets_the_bounds(const std::string& name) {
+  const std::string path = std::string(acute::test::meshes_dir()) + "/cgshop/" + name;
+  const Domain domain = io::read_domain(path);
+  MeshOptions options;
+  options.target_vertices = 2000;
+  options.time_limit_s = 120;
+  const MeshResult r = generate_mesh(domain, options);
+  EXPECT_EQ(r.status, MeshStatus::Ok) << name << ": " << r.remaining.size() << " bad triangles left";
+  EXPECT_EQ(test::verify_conforms(r.mesh, domain, mesh_area(build_domain_cdt(domain))), "") << name;
+}
+
 // A 32.7-degree sector at an input corner (a CG:SHOP exterior instance) holds one triangle: its base
 // angles stay below 90 only while the first vertices along its two walls are nearly as far from the
 // corner. At ~2,000 vertices they were 2.40 and 2.85 away (a right angle at the nearer one, whose
 // other side then had two right triangles) and no move or split mended it in 150 iterations; the
-// repair now also equalises the first radii of sectors narrower than twice the min bound.
+// repair now also equalises the first radii of sectors narrower than twice the min bound (inward,
+// and outward: the nearer moved out, when moving the farther in leaves a wall vertex short).
 TEST(MeshDomain, a_sector_narrower_than_twice_the_min_bound_gets_an_apex_triangle_within_the_bounds) {
-  const std::string path = std::string(acute::test::meshes_dir()) + "/cgshop/simple-polygon-exterior_250_a97729dd.instance.json";
-  const Domain domain = io::read_domain(path);
-  MeshOptions options;
-  options.target_vertices = 2000;
-  options.time_limit_s = 120;  // a safety net: the run takes about 15 s
-  const MeshResult r = generate_mesh(domain, options);
-  EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
-  EXPECT_EQ(test::verify_conforms(r.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
+  expect_cgshop_instance_meets_the_bounds("simple-polygon-exterior_250_a97729dd.instance.json");  // about 1.5 s
 }
 
 // An input point 1.5 above a side 6,650 long (a CG:SHOP point set). A stuck cluster there was
@@ -47,14 +54,7 @@ TEST(MeshDomain, a_sector_narrower_than_twice_the_min_bound_gets_an_apex_triangl
 // one 178-degree triangle for 200 iterations. The re-sampling now grades its spacing down to the
 // features that stay (the point's distance to the side).
 TEST(MeshDomain, an_input_point_close_to_a_long_side_meets_the_bounds) {
-  const std::string path = std::string(acute::test::meshes_dir()) + "/cgshop/point-set_60_27bc003d.instance.json";
-  const Domain domain = io::read_domain(path);
-  MeshOptions options;
-  options.target_vertices = 2000;
-  options.time_limit_s = 120;  // a safety net: the run takes about 3 s
-  const MeshResult r = generate_mesh(domain, options);
-  EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
-  EXPECT_EQ(test::verify_conforms(r.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
+  expect_cgshop_instance_meets_the_bounds("point-set_60_27bc003d.instance.json");  // about 3 s
 }
 
 // A 90-degree input sector covered by one right triangle (a CG:SHOP exterior instance: an interior
@@ -64,14 +64,7 @@ TEST(MeshDomain, an_input_point_close_to_a_long_side_meets_the_bounds) {
 // scored as well as the region and ranked ahead of the bisector point: 150 iterations, 90.000
 // degrees. No-op first steps are no longer expanded.
 TEST(MeshDomain, a_right_angled_input_sector_of_one_triangle_meets_the_bounds) {
-  const std::string path = std::string(acute::test::meshes_dir()) + "/cgshop/simple-polygon-exterior-20_150_7768dd44.instance.json";
-  const Domain domain = io::read_domain(path);
-  MeshOptions options;
-  options.target_vertices = 2000;
-  options.time_limit_s = 120;  // a safety net: the run takes about 3 s
-  const MeshResult r = generate_mesh(domain, options);
-  EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
-  EXPECT_EQ(test::verify_conforms(r.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
+  expect_cgshop_instance_meets_the_bounds("simple-polygon-exterior-20_150_7768dd44.instance.json");  // about 3 s
 }
 
 }  // namespace
