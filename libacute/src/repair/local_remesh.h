@@ -12,10 +12,13 @@
 namespace acute::detail {
 
 /// Removes the movable vertices of `sub` (everything not Input; the frozen ring of a region copy is
-/// Input), divides its constrained non-frozen edges evenly at spacing h, scatters interior points at
-/// spacing about h (randomised by seed, kept h * 0.7 from vertices and h * 0.35 from segments),
-/// then a few Lloyd sweeps with Delaunay restoration. Returns false when nothing could be removed
-/// or added (sub then unchanged or merely re-triangulated).
+/// Input), then re-samples it at a spacing of h graded down to the features that stay
+/// (min(h, lfs(v) + 0.5 |x - v|) over the vertices left, lfs their distance to the nearest other
+/// vertex or wall): constrained non-frozen edges divided by the integral of 1 / spacing, interior
+/// points by dart throwing (randomised by seed, kept 0.7 of the spacing from vertices and 0.35 from
+/// walls), then a few density-weighted Lloyd sweeps with Delaunay restoration. Returns false when
+/// the region would need more than about 8 points per vertex it has, or nothing could be removed;
+/// sub is then to be discarded.
 bool remesh_region(Mesh& sub, double h, std::uint32_t seed);
 
 /// Rebuilds the sharp corner at `apex` (an Input vertex of sub whose domain sector between two
