@@ -16,6 +16,26 @@ namespace acute::detail {
 
 namespace {
 
+/// The area per vertex of an equilateral mesh of edge s.
+double equilateral_cell(double s) { return 0.5 * std::sqrt(3.0) * s * s; }
+
+/// A wall of a region copy: a constrained or border edge, by its ends.
+struct Wall {
+  VertexHandle end[2];
+  Point2 p[2];
+};
+
+std::vector<Wall> region_walls(const Mesh& sub) {
+  std::vector<Wall> walls;
+  for (auto eh : sub.edges())
+    if (!sub.status(eh).deleted() && (is_constrained(sub, eh) || sub.is_boundary(eh))) {
+      const auto heh = sub.halfedge_handle(eh, 0);
+      const VertexHandle a = sub.from_vertex_handle(heh), b = sub.to_vertex_handle(heh);
+      walls.push_back({{a, b}, {point2(sub, a), point2(sub, b)}});
+    }
+  return walls;
+}
+
 /// The spacing a re-sampled region aims at: h, finer near the features that stay, growing away
 /// from each at kGrading per unit length: s(x) = min(h, min_v lfs(v) + kGrading |x - v|) over the
 /// vertices v left after the removal (Input vertices and the frozen ring), lfs(v) the distance
@@ -26,15 +46,7 @@ class Spacing {
  public:
   static constexpr double kGrading = 0.5;
 
-  Spacing(const Mesh& sub, double h) : h_(h) {
-    std::vector<std::array<Point2, 2>> walls;
-    std::vector<std::array<VertexHandle, 2>> ends;
-    for (auto eh : sub.edges())
-      if (!sub.status(eh).deleted() && (is_constrained(sub, eh) || sub.is_boundary(eh))) {
-        const auto heh = sub.halfedge_handle(eh, 0);
-        ends.push_back({sub.from_vertex_handle(heh), sub.to_vertex_handle(heh)});
-        walls.push_back({point2(sub, ends.back()[0]), point2(sub, ends.back()[1])});
-      }
+  Spacing(const Mesh& sub, const std::vector<Wall>& walls, double h) : h_(h) {
     std::vector<VertexHandle> vertices;
     for (auto vh : sub.vertices())
       if (!sub.status(vh).deleted()) vertices.push_back(vh);
@@ -43,8 +55,8 @@ class Spacing {
       double d2 = h * h;
       for (auto w : vertices)
         if (w != v) d2 = std::min(d2, (point2(sub, w) - p).squaredNorm());
-      for (std::size_t k = 0; k < walls.size(); ++k)
-        if (ends[k][0] != v && ends[k][1] != v) d2 = std::min(d2, distance2_to_segment(p, walls[k][0], walls[k][1]));
+      for (const Wall& w : walls)
+        if (w.end[0] != v && w.end[1] != v) d2 = std::min(d2, distance2_to_segment(p, w.p[0], w.p[1]));
       const double lfs = std::sqrt(d2);
       if (lfs < h) sites_.push_back({p, lfs});
     }
@@ -127,8 +139,7 @@ bool divide_segments(Mesh& sub, const Spacing& spacing) {
 /// its darts where it is fine without drawing millions where it is coarse. Returns false (nothing
 /// inserted) when the region would get more than max_points points; true otherwise, also when no
 /// dart fitted (a channel one triangle wide).
-bool scatter_interior(Mesh& sub, const Spacing& spacing, std::mt19937& rng, double max_points) {
-  auto cell = [](double s) { return 0.5 * std::sqrt(3.0) * s * s; };
+bool scatter_interior(Mesh& sub, const Spacing& spacing, const std::vector<Wall>& walls, std::mt19937& rng, double max_points) {
   struct Piece {
     std::array<Point2, 3> p;
     VertexHandle corner;  // a vertex of the face it was cut from: the insertion walk starts there
@@ -144,13 +155,13 @@ bool scatter_interior(Mesh& sub, const Spacing& spacing, std::mt19937& rng, doub
     const auto& p = piece.p;
     const double area = 0.5 * std::abs(signed_area2(p[0], p[1], p[2]));
     piece.least = spacing.lower_bound(p);
-    if (area > 4 * cell(piece.least) && piece.least > 1e-3 * spacing.cap()) {
+    if (area > 4 * equilateral_cell(piece.least) && piece.least > 1e-3 * spacing.cap()) {
       const Point2 m01 = 0.5 * (p[0] + p[1]), m12 = 0.5 * (p[1] + p[2]), m20 = 0.5 * (p[2] + p[0]);
       for (const auto& q : {std::array<Point2, 3>{p[0], m01, m20}, {m01, p[1], m12}, {m20, m12, p[2]}, {m01, m12, m20}})
         stack.push_back({q, piece.corner});
       continue;
     }
-    points += area / cell(spacing.at((p[0] + p[1] + p[2]) / 3.0));
+    points += area / equilateral_cell(spacing.at((p[0] + p[1] + p[2]) / 3.0));
     if (points > max_points) return false;
     pieces.push_back(piece);
   }
@@ -161,18 +172,12 @@ bool scatter_interior(Mesh& sub, const Spacing& spacing, std::mt19937& rng, doub
   std::vector<Taken> taken;
   for (auto vh : sub.vertices())
     if (!sub.status(vh).deleted()) taken.push_back({point2(sub, vh), spacing.at(point2(sub, vh))});
-  std::vector<std::array<Point2, 2>> walls;
-  for (auto eh : sub.edges())
-    if (!sub.status(eh).deleted() && (is_constrained(sub, eh) || sub.is_boundary(eh))) {
-      const auto heh = sub.halfedge_handle(eh, 0);
-      walls.push_back({point2(sub, sub.from_vertex_handle(heh)), point2(sub, sub.to_vertex_handle(heh))});
-    }
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<std::pair<Point2, VertexHandle>> darts;
   for (const Piece& piece : pieces) {
     const auto& p = piece.p;
     // Darts at the density of the least spacing, each kept with the probability (least / s)^2.
-    const int tries = 1 + static_cast<int>(4.0 * 0.5 * std::abs(signed_area2(p[0], p[1], p[2])) / cell(piece.least));
+    const int tries = 1 + static_cast<int>(4.0 * 0.5 * std::abs(signed_area2(p[0], p[1], p[2])) / equilateral_cell(piece.least));
     for (int t = 0; t < tries; ++t) {
       double u = unit(rng), v = unit(rng);
       if (u + v > 1) u = 1 - u, v = 1 - v;
@@ -181,7 +186,7 @@ bool scatter_interior(Mesh& sub, const Spacing& spacing, std::mt19937& rng, doub
       if (unit(rng) * sq * sq > piece.least * piece.least) continue;
       bool ok = true;
       for (const auto& w : taken) ok = ok && (q - w.p).norm() >= 0.35 * (sq + w.s);
-      for (const auto& w : walls) ok = ok && distance_to_segment(q, w[0], w[1]) >= 0.35 * sq;
+      for (const Wall& w : walls) ok = ok && distance_to_segment(q, w.p[0], w.p[1]) >= 0.35 * sq;
       if (!ok) continue;
       taken.push_back({q, sq});
       darts.emplace_back(q, piece.corner);
@@ -398,7 +403,7 @@ bool remesh_region(Mesh& sub, double h, std::uint32_t seed) {
   for (auto fh : sub.faces())
     if (!sub.status(fh).deleted()) {
       const auto p = face_points(sub, fh);
-      points += 0.5 * std::abs(signed_area2(p[0], p[1], p[2])) / (0.5 * std::sqrt(3.0) * h * h);
+      points += 0.5 * std::abs(signed_area2(p[0], p[1], p[2])) / equilateral_cell(h);
     }
   for (auto eh : sub.edges())
     if (!sub.status(eh).deleted() && is_constrained(sub, eh)) {
@@ -412,9 +417,11 @@ bool remesh_region(Mesh& sub, double h, std::uint32_t seed) {
       if (!sub.status(vh).deleted() && !is_input(sub, vh)) removed = remove_vertex(sub, vh) || removed;
   if (!removed) return false;
   std::mt19937 rng(seed);
-  const Spacing spacing(sub, h);
+  // (The walls once: dividing the segments adds pieces on the same lines, at the same distances.)
+  const std::vector<Wall> walls = region_walls(sub);
+  const Spacing spacing(sub, walls, h);
   divide_segments(sub, spacing);
-  if (!scatter_interior(sub, spacing, rng, 8.0 * static_cast<double>(vertices) + 128.0)) return false;
+  if (!scatter_interior(sub, spacing, walls, rng, 8.0 * static_cast<double>(vertices) + 128.0)) return false;
   make_delaunay(sub);
   lloyd_sweeps(sub, spacing, 4);
   return true;
