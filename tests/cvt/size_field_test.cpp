@@ -28,6 +28,20 @@ TEST(SizeField, piecewise_linear_interpolates_and_clamps_outside) {
   EXPECT_EQ(hint, 0);
 }
 
+// Samples along a slanted wall are collinear up to rounding: the background triangulation can hold
+// a triangle whose rounded area is zero. Its barycentric coordinates are infinite; the value came
+// out NaN, and one NaN in a wall's integral of 1/h left the whole wall undivided (a CG:SHOP
+// boundary side 7,000 long with no vertex on it).
+TEST(SizeField, a_background_triangle_of_zero_rounded_area_interpolates_along_its_edges) {
+  const SizeField f = SizeField::piecewise_linear({{0, 0}, {1, 0}, {2, 0}}, {{{0, 1, 2}}}, {1, 2, 3});
+  int hint = 0;
+  const double h = f.eval({1.5, 0}, hint);
+  ASSERT_TRUE(std::isfinite(h));
+  EXPECT_NEAR(h, 2.5, 1e-14);
+  EXPECT_NEAR(f({0.25, 0}), 1.25, 1e-14);
+  EXPECT_NEAR(f({3, 0}), 3, 1e-14) << "beyond its ends: the nearest end's value";
+}
+
 TEST(SizeField, vertex_count_formula_inverts) {
   DomainMeasures m;
   m.area = 3;

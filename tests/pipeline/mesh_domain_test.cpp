@@ -67,5 +67,14 @@ TEST(MeshDomain, a_right_angled_input_sector_of_one_triangle_meets_the_bounds) {
   expect_cgshop_instance_meets_the_bounds("simple-polygon-exterior-20_150_7768dd44.instance.json");  // about 3 s
 }
 
+// A 4.65-degree strip between a boundary side 7,000 long and a segment (a CG:SHOP exterior
+// instance). The size field came out NaN at one point of that side (a background triangle of zero
+// rounded area among its collinear samples): the CVT start left the side undivided, the strip a fan
+// of slivers, and after 60 s one 92-degree triangle stayed at the strip's apex. Now the side is
+// divided along the strip's width and the instance meets the bounds in under a second.
+TEST(MeshDomain, a_long_boundary_side_of_a_narrow_strip_is_divided_and_meets_the_bounds) {
+  expect_cgshop_instance_meets_the_bounds("simple-polygon-exterior_20_87cff693.instance.json");  // about 1 s
+}
+
 }  // namespace
 }  // namespace acute

@@ -118,6 +118,20 @@ int SizeField::walk(const Point2& p, int start) const {
   return t;
 }
 
+double SizeField::along_nearest_edge(int t, const Point2& p) const {
+  const auto& tri = triangles_[static_cast<std::size_t>(t)];
+  double best_d2 = std::numeric_limits<double>::infinity(), best = values_[static_cast<std::size_t>(tri[0])];
+  for (int k = 0; k < 3; ++k) {
+    const auto i = static_cast<std::size_t>(tri[static_cast<std::size_t>(k)]), j = static_cast<std::size_t>(tri[static_cast<std::size_t>((k + 1) % 3)]);
+    const Point2 d = points_[j] - points_[i];
+    const double len2 = d.squaredNorm();
+    const double w = len2 > 0 ? std::clamp((p - points_[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
+    const double d2 = (points_[i] + w * d - p).squaredNorm();
+    if (d2 < best_d2) best_d2 = d2, best = (1 - w) * values_[i] + w * values_[j];
+  }
+  return best;
+}
+
 double SizeField::eval(const Point2& p, int& hint) const {
   if (is_uniform()) return uniform_;
   auto barycentric = [&](int t, double (&l)[3]) {
@@ -139,6 +153,9 @@ double SizeField::eval(const Point2& p, int& hint) const {
     barycentric(hint, l);
   }
   const auto& tri = triangles_[static_cast<std::size_t>(hint)];
+  // A background triangle whose rounded area is zero (collinear samples along a slanted wall; its
+  // exact area is not) has no barycentric coordinates: interpolate along its edge nearest p.
+  if (!(std::isfinite(l[0]) && std::isfinite(l[1]) && std::isfinite(l[2]))) return along_nearest_edge(hint, p);
   double l0 = std::max(l[0], 0.0), l1 = std::max(l[1], 0.0), l2 = std::max(l[2], 0.0);
   const double s = l0 + l1 + l2;
   if (!(s > 0)) return values_[static_cast<std::size_t>(tri[0])];

@@ -48,6 +48,8 @@ class SizeField {
 
  private:
   int walk(const Point2& p, int start) const;
+  /// h(p) interpolated along the edge of triangle t nearest p (t's rounded area is zero).
+  double along_nearest_edge(int t, const Point2& p) const;
   void update_range();
 
   double uniform_ = 1.0;
