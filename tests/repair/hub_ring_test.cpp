@@ -128,6 +128,65 @@ TEST(HubRing, no_planned_gap_narrower_than_a_max_bound_below_90_allows) {
   EXPECT_LT(detail::plan_ring_gaps(30 * deg, 10.5 * deg, 0, detail::apex_gap_floor(80 * deg)).size(), 2u);
 }
 
+/// A convex boundary corner at the origin (walls at -80 and -161 degrees) split by interior
+/// segments at -81 and -116 degrees: a 1-degree strip along the boundary, a 35-degree sector
+/// beside it (ringed) and a 45-degree one (it holds one triangle at the apex), as at a CG:SHOP
+/// instance's 0.25-degree strip (exterior_150_fb998503).
+Domain strip_beside_one_triangle_sectors() {
+  Domain d;
+  d.points = {Point2(0, 0), polar(10, -161), Point2(polar(10, -161).x(), -12), Point2(polar(10, -80).x(), -12), polar(10, -80),
+              polar(8, -81), polar(8, -116)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 0}, {0, 5}, {0, 6}};
+  return d;
+}
+
+TEST(HubRing, the_walls_of_narrow_sectors_beside_the_ring_start_at_the_strips_radius) {
+  // The ring's thin apex triangles are Delaunay, as every triangle of a non-obtuse mesh is, only
+  // when no vertex lies in their circumcircles (disks about as wide as the strip's apex radius):
+  // the first vertices of the 35- and 45-degree sectors' walls move out to the strip's radius.
+  for (std::size_t n : {800u, 4000u}) {
+    SCOPED_TRACE(n);
+    Mesh mesh = cvt_mesh(strip_beside_one_triangle_sectors(), n);
+    const double area = test::total_area(mesh);
+    const VertexHandle apex_big = vertex_at(mesh, Point2(0, 0));
+    ASSERT_TRUE(apex_big.is_valid());
+    const double reach = detail::hub_ring_reach(mesh, apex_big, kStrip);
+    ASSERT_GT(reach, 0);
+    detail::Region region;
+    ASSERT_TRUE(detail::extract_region(mesh, vertices_near(mesh, apex_big, 1.6 * reach), forced_corner_vertices(mesh, 30), region));
+    Mesh sub = region.sub;
+    const VertexHandle apex = vertex_at(sub, Point2(0, 0));
+    ASSERT_TRUE(apex.is_valid());
+    ASSERT_TRUE(detail::rebuild_hub_ring(sub, apex, kStrip, kPi / 2));
+    auto first_radius_towards = [&](double deg) {
+      for (auto h : sub.voh_range(apex))
+        if (is_constrained(sub, sub.edge_handle(h)) && point2(sub, sub.to_vertex_handle(h)).normalized().dot(polar(1, deg)) > 1 - 1e-9)
+          return point2(sub, sub.to_vertex_handle(h)).norm();
+      return 0.0;
+    };
+    const double r_strip = first_radius_towards(-81);
+    ASSERT_GT(r_strip, 0);
+    for (double deg : {-80.0, -116.0, -161.0}) EXPECT_GE(first_radius_towards(deg), 0.95 * r_strip) << deg;
+    // No Steiner point left inside the strip nearer than its walls' first vertices.
+    for (auto vh : sub.vertices()) {
+      if (sub.status(vh).deleted() || sub.data(vh).kind != VertexKind::Free) continue;
+      const Point2 p = point2(sub, vh);
+      const double deg = std::atan2(p.y(), p.x()) * 180 / kPi;
+      EXPECT_FALSE(deg > -81 && deg < -80 && p.norm() < r_strip) << p.transpose();
+    }
+    // The strip's apex triangle and the ring's: no angle of 90 or more. (The 45-degree sector may
+    // keep a point just beyond its walls' radius, which the repair's relocation then moves.)
+    for (auto fh : sub.vf_range(apex)) {
+      const auto p = face_points(sub, fh);
+      const Point2 centroid = (p[0] + p[1] + p[2]) / 3;
+      if (std::atan2(centroid.y(), centroid.x()) * 180 / kPi < -116) continue;
+      const auto a = angles_deg(p[0], p[1], p[2]);
+      EXPECT_LT(std::max({a[0], a[1], a[2]}), 90) << p[0].transpose() << " | " << p[1].transpose() << " | " << p[2].transpose();
+    }
+    test::expect_commit_keeps_the_mesh(mesh, region, sub, area);
+  }
+}
+
 TEST(EqualiseStripApexes, the_apex_triangles_become_isosceles_and_their_wall_vertices_stay) {
   HubRegion h = hub_region(2000);
   ASSERT_TRUE(h.apex.is_valid());

@@ -59,6 +59,84 @@ double first_radius(const Mesh& mesh, HalfedgeHandle spoke) {
 /// The disk a ring rebuilds reaches this far beyond its walls' first vertices.
 constexpr double kReach = 1.1;
 
+/// The wall spoke of `apex` along the unit direction u, or an invalid handle.
+HalfedgeHandle wall_spoke_along(const Mesh& mesh, VertexHandle apex, const Point2& u) {
+  const Point2 c = point2(mesh, apex);
+  for (auto spoke : mesh.voh_range(apex))
+    if (is_constrained(mesh, mesh.edge_handle(spoke)) && (point2(mesh, mesh.to_vertex_handle(spoke)) - c).normalized().dot(u) > 1 - 1e-12) return spoke;
+  return HalfedgeHandle();
+}
+
+/// Moves the first vertex of the wall along u out to radius r: the movable vertices on the wall
+/// nearer than that go and one is put at r. False when an input vertex is nearer or an edit failed.
+bool push_wall_out(Mesh& sub, VertexHandle apex, const Point2& u, double r) {
+  const Point2 c = point2(sub, apex);
+  for (;;) {
+    const HalfedgeHandle spoke = wall_spoke_along(sub, apex, u);
+    if (!spoke.is_valid()) return false;
+    const VertexHandle first = sub.to_vertex_handle(spoke);
+    const double r_first = first_radius(sub, spoke);
+    if (r_first >= r * (1 - 1e-9)) return r_first <= r * (1 + 1e-9) || split_edge(sub, sub.edge_handle(spoke), c + r * u).is_valid();
+    if (is_input(sub, first) || !remove_vertex(sub, first)) return false;
+  }
+}
+
+/// The walls (unit directions from the apex) to move out to the strips' radius around each ringed
+/// sector. A ring's thin apex triangles are Delaunay, as every triangle of a non-obtuse mesh is,
+/// only when their circumcircles, disks about as wide as the ring's radius, hold no vertex: a wall
+/// of the sector whose first vertex is nearer than the strip's radius must start there too. So
+/// must the far wall of a narrow sector across it (a strip's apex triangle stays isosceles; a
+/// sector below one_triangle_below holds one triangle, whose legs must nearly agree), and so on.
+std::vector<std::pair<Point2, double>> walls_to_push(const Mesh& sub, VertexHandle apex, const std::vector<SegmentSector>& sectors,
+                                                     double strip_below, double one_triangle_below) {
+  std::vector<std::pair<Point2, double>> out;
+  const Point2 c = point2(sub, apex);
+  auto direction = [&](HalfedgeHandle spoke) { return (point2(sub, sub.to_vertex_handle(spoke)) - c).normalized(); };
+  std::vector<HalfedgeHandle> done;
+  for (const SegmentSector& sector : sectors) {
+    const StripsAcross strips = strips_across(sectors, sector, strip_below);
+    if (!strips.any()) continue;
+    double r = 0;
+    if (strips.first > 0) r = std::max(r, first_radius(sub, sector.first));
+    if (strips.last > 0) r = std::max(r, first_radius(sub, sector.last));
+    // Walk from each wall of the sector across narrow sectors, pushing every wall nearer than r.
+    std::vector<std::pair<HalfedgeHandle, const SegmentSector*>> todo{{sector.first, &sector}, {sector.last, &sector}};
+    while (!todo.empty()) {
+      const auto [wall, from] = todo.back();
+      todo.pop_back();
+      if (std::find(done.begin(), done.end(), wall) != done.end()) continue;
+      done.push_back(wall);
+      if (first_radius(sub, wall) < 0.95 * r) out.emplace_back(direction(wall), r);
+      for (const SegmentSector& next : sectors)
+        if (&next != from && (next.first == wall || next.last == wall) && next.radians < one_triangle_below)
+          todo.emplace_back(next.first == wall ? next.last : next.first, &next);
+    }
+  }
+  return out;
+}
+
+/// Removes the Steiner points (not on segments) inside the sectors at apex narrower than
+/// `narrow_below` and nearer than both of the sector's walls' first vertices: such a sector holds
+/// one triangle at the apex (a strip's is isosceles), and a point left inside splits it into
+/// slivers. (Clearing the apex triangle's whole circumdisk as well, which a point just beyond the
+/// walls' radius can lie in, made two CG:SHOP instances worse: the repair moves such points.)
+bool clear_narrow_sectors(Mesh& sub, VertexHandle apex, double narrow_below) {
+  const Point2 c = point2(sub, apex);
+  std::vector<VertexHandle> doomed;
+  for (const SegmentSector& sector : segment_sectors(sub, apex)) {
+    if (sector.radians >= narrow_below) continue;
+    const Point2 pa = point2(sub, sub.to_vertex_handle(sector.first)), pb = point2(sub, sub.to_vertex_handle(sector.last));
+    const double ra = (pa - c).norm(), rb = (pb - c).norm();
+    const Point2 ua = (pa - c) / ra, ub = (pb - c) / rb;
+    for (auto vh : sub.vertices()) {
+      if (sub.status(vh).deleted() || sub.data(vh).kind != VertexKind::Free) continue;
+      const Point2 d = point2(sub, vh) - c;
+      if (d.norm() < std::min(ra, rb) && ua.x() * d.y() - ua.y() * d.x() > 0 && d.x() * ub.y() - d.y() * ub.x() > 0) doomed.push_back(vh);
+    }
+  }
+  return remove_vertices(sub, doomed);
+}
+
 }  // namespace
 
 double hub_ring_reach(const Mesh& mesh, VertexHandle apex, double strip_below) {
@@ -146,6 +224,9 @@ std::vector<double> plan_ring_gaps(double sector, double strip_first, double str
 bool rebuild_hub_ring(Mesh& sub, VertexHandle apex, double strip_below, double max_angle) {
   const double gap_floor = apex_gap_floor(max_angle);
   equalise_strip_apexes(sub, apex, strip_below);
+  for (const auto& [u, r] : walls_to_push(sub, apex, segment_sectors(sub, apex), strip_below, 2 * strip_below))
+    if (!push_wall_out(sub, apex, u, r)) return false;
+  if (!clear_narrow_sectors(sub, apex, 2 * strip_below)) return false;
   const Point2 c = point2(sub, apex);
   // Every ring is planned before any edit: the edits re-triangulate the apex's star, so the
   // sectors' spoke handles would not survive them.
