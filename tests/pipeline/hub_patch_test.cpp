@@ -137,5 +137,33 @@ TEST(HubPatch, the_pipeline_meets_the_bounds_at_strip_hubs) {
   }
 }
 
+/// A CG:SHOP instance's hub (exterior-20_60_57858065, scaled by 1/100): on the domain's boundary,
+/// a segment 0.27 degrees above the boundary wall beside a 150-degree sector, and a short segment
+/// 2.5 above the hub that keeps the patch small.
+Domain needle_strip_hub_below_a_segment() {
+  Domain d;
+  d.points = {Point2(0, 0), polar(12.9, 30.24), Point2(-21, polar(12.9, 30.24).y()), polar(21, -179.73), Point2(-6.35, 0),
+              Point2(0.15, 2.5), Point2(0.35, 2.5)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {5, 6}};
+  return d;
+}
+
+// The CVT start cuts a strip's walls where the strip is as wide as the size there (here 2.1 from
+// the hub), beyond the radius the segment above allows the patch (1.5): the wall edge left between
+// the two was a sliver as wide as the strip beside the coarse mesh of the apex triangle's wide side,
+// and the repair ended at its 60 s limit with 146 obtuse triangles. The patch now reaches past the
+// strips' apex triangles (2.25 here) where the features allow: about 8 s in all.
+TEST(HubPatch, the_pipeline_meets_the_bounds_at_a_needle_strip_hub) {
+  const Domain d = needle_strip_hub_below_a_segment();
+  MeshOptions options;
+  options.target_vertices = 2000;
+  options.time_limit_s = 120;
+  const MeshResult r = generate_mesh(d, options);
+  EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
+  EXPECT_EQ(test::verify_valid(r.mesh), "");
+  EXPECT_EQ(test::verify_conforms(r.mesh, d, mesh_area(build_domain_cdt(d))), "");
+  EXPECT_EQ(bad_within(r.mesh, 1e9), 0);
+}
+
 }  // namespace
 }  // namespace acute

@@ -35,6 +35,12 @@ constexpr double kFeatureShare = 0.6, kWallShare = 0.6;
 constexpr double kMaxLogSize = 0.35;
 /// The patch's outer triangles at most this many times the mesh's spacing around it.
 constexpr double kMaxSeamRatio = 2.0;
+/// The patch reaches this much past its strips' apex triangles where the other limits allow...
+constexpr double kPastStripApexes = 1.1;
+/// (at least this much past them, or not at all)
+constexpr double kAtLeastPast = 1.02;
+/// ... and then keeps at least this share of the distance to other features and of the walls.
+constexpr double kFarShare = 0.9;
 /// At most this many hubs are patched (each costs a copy of the mesh).
 constexpr int kMaxHubs = 16;
 
@@ -42,6 +48,7 @@ struct Wall {
   Point2 u;          ///< direction from the hub
   double phi = 0;    ///< angle from the first wall, counter-clockwise
   double length = 0; ///< to the segment's far end
+  double first = 0;  ///< to the mesh's first vertex along it, when planned
 };
 
 struct HubPlan {
@@ -84,7 +91,7 @@ bool plan_walls(const Mesh& mesh, VertexHandle vh, double strip_below, HubPlan& 
   auto wall_of = [&](HalfedgeHandle spoke, double phi) {
     const auto& ends = segment_endpoints(mesh, mesh.data(mesh.edge_handle(spoke)).segment);
     const Point2 far = (ends[0] - c).squaredNorm() > (ends[1] - c).squaredNorm() ? ends[0] : ends[1];
-    return Wall{(far - c).normalized(), phi, (far - c).norm()};
+    return Wall{(far - c).normalized(), phi, (far - c).norm(), (point2(mesh, mesh.to_vertex_handle(spoke)) - c).norm()};
   };
   plan.walls.clear();
   std::size_t i = start;
@@ -230,6 +237,10 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
   std::vector<Point2> patched;
   const std::size_t vertices_before = mesh.n_vertices();
   for (HubPlan& plan : plans) {
+    // The walls' and other features' limit for reaching past the strips' apex triangles: nearer
+    // to them than the usual share, but still short of them.
+    static_assert(kWallShare == kFeatureShare, "the cap scales both shares");
+    const double cap = plan.radius * kFarShare / kFeatureShare;
     double spacing = spacing_around(mesh, plan.hub, plan.radius);
     if (!(spacing > 0)) continue;
     // The log-polar mesh's triangles at its outer side are at least floor_size (in the log
@@ -247,6 +258,19 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
       if (!(spacing > 0)) break;
     }
     if (!(spacing > 0)) continue;
+    // The CVT start cuts a strip's walls where the strip is as wide as the size there, which can
+    // be beyond the seam's radius: the wall edge left between the patch and that first vertex is
+    // a sliver as wide as the strip, beside the coarse mesh of the apex triangle's wide side, that
+    // the repair cannot grade (a 0.27-degree strip of a CG:SHOP instance: 23 obtuse triangles).
+    // The patch then reaches past the strips' apex triangles, where the walls and features allow.
+    double strip_apexes = 0;
+    for (std::size_t i = 0; i + 1 < plan.walls.size(); ++i)
+      if (plan.walls[i + 1].phi - plan.walls[i].phi < strip_below) strip_apexes = std::max({strip_apexes, plan.walls[i].first, plan.walls[i + 1].first});
+    if (const double past = std::min(kPastStripApexes * strip_apexes, cap); past > plan.radius && past > kAtLeastPast * strip_apexes) {
+      plan.radius = past;
+      spacing = spacing_around(mesh, plan.hub, plan.radius);
+      if (!(spacing > 0)) continue;
+    }
     // The log-polar domain: x = ln(r / r_inner), y = phi. The walls are its horizontal segments
     // from the inner side x = 0 (the apex triangles' bases) to x = kLogDepth (the patch's radius);
     // the two outermost lines reach on over the overhang to its outer side.
