@@ -68,7 +68,9 @@ bool plan_walls(const Mesh& mesh, VertexHandle vh, double strip_below, HubPlan& 
   if (partial || sectors.size() < 2) return false;
   double narrowest = INFINITY, widest = 0;
   for (const SegmentSector& s : sectors) narrowest = std::min(narrowest, s.radians), widest = std::max(widest, s.radians);
-  if (!(narrowest < strip_below) || !(widest >= 2 * strip_below)) return false;
+  // (A hub whose widest sector holds one triangle at the apex, below twice the min bound, is
+  // patched too: its strips' apex triangles and the grading beside them are the same problem.)
+  if (!(narrowest < strip_below) || !(widest >= strip_below)) return false;
   // Chain the sectors: start at one no other sector ends at (a boundary hub); round a full fan,
   // start after the widest sector, where the log-polar domain is cut open.
   std::size_t start = sectors.size();

@@ -16,7 +16,7 @@
 namespace acute::detail {
 
 /// Replaces the start mesh's disk around every strip hub (an input vertex with a sector narrower
-/// than options.min_angle_deg beside one at least twice as wide) by an acute mesh made in
+/// than options.min_angle_deg and one that is not) by an acute mesh made in
 /// log-polar coordinates and mapped back. Returns the hubs patched; a hub whose patch cannot be
 /// made or inserted is left as it was. `seconds` (> 0) bounds the log-polar meshing.
 std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, double seconds);
