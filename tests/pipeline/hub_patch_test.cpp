@@ -192,5 +192,29 @@ TEST(HubPatch, the_pipeline_meets_the_bounds_at_a_hub_without_a_wide_sector) {
   EXPECT_EQ(bad_within(r.mesh, 1e9), 0);
 }
 
+/// A third CG:SHOP instance's hub (exterior-20_20_e64ff8fc, scaled by 1/100): a boundary corner
+/// split by a segment into sectors of 5.5 and 86.2 degrees, and an input point on no segment 0.83
+/// from the corner.
+Domain strip_hub_beside_an_input_point() {
+  Domain d;
+  d.points = {Point2(0, 0), Point2(-0.42, -15.51), Point2(-26.28, -15.51), Point2(-26.28, 1.5), Point2(-23.30, -0.92), Point2(-0.44, -0.70)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}};
+  return d;
+}
+
+// Input points on no segment limit the patch like segments do: the patch was 5.2 wide here and
+// meshed through the point (6 obtuse triangles at a 30 s limit); now 0.5, and about 3 s in all.
+TEST(HubPatch, the_pipeline_meets_the_bounds_at_a_hub_beside_an_input_point) {
+  const Domain d = strip_hub_beside_an_input_point();
+  MeshOptions options;
+  options.target_vertices = 2000;
+  options.time_limit_s = 120;
+  const MeshResult r = generate_mesh(d, options);
+  EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
+  EXPECT_EQ(test::verify_valid(r.mesh), "");
+  EXPECT_EQ(test::verify_conforms(r.mesh, d, mesh_area(build_domain_cdt(d))), "");
+  EXPECT_EQ(bad_within(r.mesh, 1e9), 0);
+}
+
 }  // namespace
 }  // namespace acute

@@ -231,6 +231,10 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
     for (const Wall& w : plan.walls) radius = std::min(radius, kWallShare * w.length);
     for (const auto& ends : segment_table(mesh))
       if (ends[0] != c && ends[1] != c) radius = std::min(radius, kFeatureShare * distance_to_segment(c, ends[0], ends[1]));
+    // Input points on no segment are features too (a CG:SHOP instance's point 83 from a hub: the
+    // patch, 530 wide, was meshed through it).
+    for (auto v : mesh.vertices())
+      if (!mesh.status(v).deleted() && v != vh && is_input(mesh, v)) radius = std::min(radius, kFeatureShare * (point2(mesh, v) - c).norm());
     if (!(radius > 0) || !std::isfinite(radius)) continue;
     plan.radius = radius;
     plans.push_back(std::move(plan));
