@@ -216,5 +216,34 @@ TEST(HubPatch, the_pipeline_meets_the_bounds_at_a_hub_beside_an_input_point) {
   EXPECT_EQ(bad_within(r.mesh, 1e9), 0);
 }
 
+/// Two interior hubs 2 apart, each with an 8-degree strip: each hub's own limits (0.6 of the
+/// distance to the other's point) allow patches of 1.2, whose cleared disks would overlap.
+Domain two_strip_hubs_close_together() {
+  Domain d;
+  d.points = {Point2(-10, -10), Point2(10, -10), Point2(10, 10), Point2(-10, 10), Point2(-1, 0), Point2(-1, 8),
+              Point2(-1, 0) + polar(8, 98), Point2(1, 0), Point2(1, 8), Point2(1, 0) + polar(8, 82)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {4, 6}, {7, 8}, {7, 9}};
+  return d;
+}
+
+// A patch's cleared disk keeps clear of the patches made before it (the second hub's shrinks to
+// 0.61 here). On CG:SHOP exterior_10_74050e4d, hubs 200 apart had patches of 120 each and the
+// second cleared part of the first: 60-220 obtuse triangles at the 60 s limit, 1 since. This
+// domain met the bounds with the overlap too: the test guards close hubs, both patched.
+TEST(HubPatch, the_pipeline_meets_the_bounds_at_two_hubs_close_together) {
+  const Domain d = two_strip_hubs_close_together();
+  Mesh start = test::cvt_mesh(d, 2000);
+  EXPECT_EQ(detail::patch_strip_hubs(start, MeshOptions{}, 0).size(), 2u);
+  EXPECT_EQ(test::verify_valid(start), "");
+  MeshOptions options;
+  options.target_vertices = 2000;
+  options.time_limit_s = 120;
+  const MeshResult r = generate_mesh(d, options);
+  EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
+  EXPECT_EQ(test::verify_valid(r.mesh), "");
+  EXPECT_EQ(test::verify_conforms(r.mesh, d, mesh_area(build_domain_cdt(d))), "");
+  EXPECT_EQ(bad_within(r.mesh, 1e9), 0);
+}
+
 }  // namespace
 }  // namespace acute

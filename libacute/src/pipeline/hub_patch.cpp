@@ -41,6 +41,10 @@ constexpr double kPastStripApexes = 1.1;
 constexpr double kAtLeastPast = 1.02;
 /// ... and then keeps at least this share of the distance to other features and of the walls.
 constexpr double kFarShare = 0.9;
+/// A patch clears the disk of this many times its radius (its margin blends with the mesh)...
+constexpr double kClearMargin = 1.05;
+/// ... and two patches' cleared disks keep this share of the distance between their hubs.
+constexpr double kHubGap = 0.95;
 /// At most this many hubs are patched (each costs a copy of the mesh).
 constexpr int kMaxHubs = 16;
 
@@ -59,6 +63,7 @@ struct HubPlan {
   double cut_width = 0;
   double narrowest = 0;
   double radius = 0;
+  double cap = 0;  ///< the farthest it may reach past its strips' apex triangles
 };
 
 /// The hub's walls in counter-clockwise order, or empty when vh is no strip hub.
@@ -237,16 +242,17 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
       if (!mesh.status(v).deleted() && v != vh && is_input(mesh, v)) radius = std::min(radius, kFeatureShare * (point2(mesh, v) - c).norm());
     if (!(radius > 0) || !std::isfinite(radius)) continue;
     plan.radius = radius;
+    // The walls' and other features' limit for reaching past the strips' apex triangles: nearer
+    // to them than the usual share, but still short of them.
+    static_assert(kWallShare == kFeatureShare, "the cap scales both shares");
+    plan.cap = radius * kFarShare / kFeatureShare;
     plans.push_back(std::move(plan));
     if (static_cast<int>(plans.size()) >= kMaxHubs) break;
   }
   std::vector<Point2> patched;
+  std::vector<std::pair<Point2, double>> placed;  // the patches made: centre, radius
   const std::size_t vertices_before = mesh.n_vertices();
   for (HubPlan& plan : plans) {
-    // The walls' and other features' limit for reaching past the strips' apex triangles: nearer
-    // to them than the usual share, but still short of them.
-    static_assert(kWallShare == kFeatureShare, "the cap scales both shares");
-    const double cap = plan.radius * kFarShare / kFeatureShare;
     double spacing = spacing_around(mesh, plan.hub, plan.radius);
     if (!(spacing > 0)) continue;
     // The log-polar mesh's triangles at its outer side are at least floor_size (in the log
@@ -272,8 +278,18 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
     double strip_apexes = 0;
     for (std::size_t i = 0; i + 1 < plan.walls.size(); ++i)
       if (plan.walls[i + 1].phi - plan.walls[i].phi < strip_below) strip_apexes = std::max({strip_apexes, plan.walls[i].first, plan.walls[i + 1].first});
-    if (const double past = std::min(kPastStripApexes * strip_apexes, cap); past > plan.radius && past > kAtLeastPast * strip_apexes) {
+    if (const double past = std::min(kPastStripApexes * strip_apexes, plan.cap); past > plan.radius && past > kAtLeastPast * strip_apexes) {
       plan.radius = past;
+      spacing = spacing_around(mesh, plan.hub, plan.radius);
+      if (!(spacing > 0)) continue;
+    }
+    // Two hubs' disks (with the margins they clear) must not overlap: the second patch would
+    // remove part of the first (a CG:SHOP instance's hubs 200 apart had patches of 120 each).
+    double room = plan.radius;
+    for (const auto& [centre, r] : placed) room = std::min(room, kHubGap * (point2(mesh, plan.hub) - centre).norm() / kClearMargin - r);
+    if (room < plan.radius) {
+      if (!(room > 0)) continue;
+      plan.radius = room;
       spacing = spacing_around(mesh, plan.hub, plan.radius);
       if (!(spacing > 0)) continue;
     }
@@ -327,13 +343,14 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
       std::fprintf(stderr, "\n");
     }
     Mesh backup = mesh;
-    const std::vector<VertexHandle> doomed = vertices_near(mesh, plan.hub, 1.05 * plan.radius);
+    const std::vector<VertexHandle> doomed = vertices_near(mesh, plan.hub, kClearMargin * plan.radius);
     if (!remove_vertices(mesh, doomed) || !insert_patch(mesh, plan, log_mesh, std::log(plan.radius) - kLogDepth)) {
       if (trace) std::fprintf(stderr, "hub patch: insertion failed, hub left as it was\n");
       mesh = std::move(backup);
       continue;
     }
     patched.push_back(point2(mesh, plan.hub));
+    placed.emplace_back(point2(mesh, plan.hub), plan.radius);
   }
   if (!patched.empty()) collect_garbage(mesh);
   if (trace && !plans.empty()) std::fprintf(stderr, "hub patches: %zu of %zu hubs, %zu vertices before, %zu after\n", patched.size(), plans.size(), vertices_before, mesh.n_vertices());
