@@ -63,4 +63,11 @@ std::vector<SegmentSector> segment_sectors(const Mesh& mesh, VertexHandle vh, bo
   return out;
 }
 
+HalfedgeHandle segment_spoke_along(const Mesh& mesh, VertexHandle vh, const Point2& u) {
+  const Point2 c = point2(mesh, vh);
+  for (auto spoke : mesh.voh_range(vh))
+    if (is_constrained(mesh, mesh.edge_handle(spoke)) && (point2(mesh, mesh.to_vertex_handle(spoke)) - c).normalized().dot(u) > 1 - 1e-12) return spoke;
+  return HalfedgeHandle();
+}
+
 }  // namespace acute

@@ -163,9 +163,7 @@ bool insert_patch(Mesh& mesh, const HubPlan& plan, const Mesh& log_mesh, double 
   for (std::size_t i = 0; i < walls; ++i) {
     const Point2 u = plan.walls[i].u;
     std::sort(wall_radii[i].rbegin(), wall_radii[i].rend());
-    HalfedgeHandle spoke;
-    for (auto h : mesh.voh_range(plan.hub))
-      if (is_constrained(mesh, mesh.edge_handle(h)) && (point2(mesh, mesh.to_vertex_handle(h)) - c).normalized().dot(u) > 1 - 1e-12) spoke = h;
+    HalfedgeHandle spoke = segment_spoke_along(mesh, plan.hub, u);
     if (!spoke.is_valid()) return false;
     for (double r : wall_radii[i]) {
       if ((point2(mesh, mesh.to_vertex_handle(spoke)) - c).norm() <= r) return false;

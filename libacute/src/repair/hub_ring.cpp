@@ -59,20 +59,12 @@ double first_radius(const Mesh& mesh, HalfedgeHandle spoke) {
 /// The disk a ring rebuilds reaches this far beyond its walls' first vertices.
 constexpr double kReach = 1.1;
 
-/// The wall spoke of `apex` along the unit direction u, or an invalid handle.
-HalfedgeHandle wall_spoke_along(const Mesh& mesh, VertexHandle apex, const Point2& u) {
-  const Point2 c = point2(mesh, apex);
-  for (auto spoke : mesh.voh_range(apex))
-    if (is_constrained(mesh, mesh.edge_handle(spoke)) && (point2(mesh, mesh.to_vertex_handle(spoke)) - c).normalized().dot(u) > 1 - 1e-12) return spoke;
-  return HalfedgeHandle();
-}
-
 /// Moves the first vertex of the wall along u out to radius r: the movable vertices on the wall
 /// nearer than that go and one is put at r. False when an input vertex is nearer or an edit failed.
 bool push_wall_out(Mesh& sub, VertexHandle apex, const Point2& u, double r) {
   const Point2 c = point2(sub, apex);
   for (;;) {
-    const HalfedgeHandle spoke = wall_spoke_along(sub, apex, u);
+    const HalfedgeHandle spoke = segment_spoke_along(sub, apex, u);
     if (!spoke.is_valid()) return false;
     const VertexHandle first = sub.to_vertex_handle(spoke);
     const double r_first = first_radius(sub, spoke);
@@ -170,9 +162,7 @@ bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below, boo
       if (ratio < 1.5) {
         if (!remove_vertex(sub, far_vertex)) return false;
         // The wall's spoke now runs to the next vertex along it.
-        far_spoke = HalfedgeHandle();
-        for (auto spoke : sub.voh_range(apex))
-          if (is_constrained(sub, sub.edge_handle(spoke)) && (point2(sub, sub.to_vertex_handle(spoke)) - c).normalized().dot(u) > 1 - 1e-12) far_spoke = spoke;
+        far_spoke = segment_spoke_along(sub, apex, u);
         if (!far_spoke.is_valid()) return false;
         if (outward && first_radius(sub, far_spoke) <= r_near * (1 + 1e-9)) return false;  // the next wall vertex is nearer
       }

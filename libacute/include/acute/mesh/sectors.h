@@ -52,4 +52,9 @@ struct SegmentSector {
 /// sets *partial. The returned handles are valid until the mesh is edited.
 std::vector<SegmentSector> segment_sectors(const Mesh& mesh, VertexHandle vh, bool* partial = nullptr);
 
+/// The segment spoke (constrained edge) of vh whose direction is the unit vector u (within 1e-12
+/// of its cosine), or an invalid handle. For finding a wall again after edits at vh, whose handles
+/// they invalidate (a choice of direction, not a topological test).
+HalfedgeHandle segment_spoke_along(const Mesh& mesh, VertexHandle vh, const Point2& u);
+
 }  // namespace acute
