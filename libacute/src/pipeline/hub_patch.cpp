@@ -225,6 +225,9 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
   if (!(strip_below > 0)) return {};
   const bool trace = std::getenv("ACUTE_TRACE") != nullptr;
   std::vector<HubPlan> plans;
+  std::vector<Point2> input_points;  // features too, on a segment or not (collected once: no O(n) pass per hub)
+  for (auto v : mesh.vertices())
+    if (!mesh.status(v).deleted() && is_input(mesh, v)) input_points.push_back(point2(mesh, v));
   for (auto vh : mesh.vertices()) {
     if (mesh.status(vh).deleted() || !is_input(mesh, vh)) continue;
     HubPlan plan;
@@ -236,8 +239,8 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
       if (ends[0] != c && ends[1] != c) radius = std::min(radius, kFeatureShare * distance_to_segment(c, ends[0], ends[1]));
     // Input points on no segment are features too (a CG:SHOP instance's point 83 from a hub: the
     // patch, 530 wide, was meshed through it).
-    for (auto v : mesh.vertices())
-      if (!mesh.status(v).deleted() && v != vh && is_input(mesh, v)) radius = std::min(radius, kFeatureShare * (point2(mesh, v) - c).norm());
+    for (const Point2& q : input_points)
+      if (q != c) radius = std::min(radius, kFeatureShare * (q - c).norm());
     if (!(radius > 0) || !std::isfinite(radius)) continue;
     plan.radius = radius;
     // The walls' and other features' limit for reaching past the strips' apex triangles: nearer
