@@ -213,14 +213,42 @@ Domain two_strip_hubs_close_together() {
   return d;
 }
 
-// A patch's cleared disk keeps clear of the patches made before it (the second hub's shrinks to
-// 0.61 here). On CG:SHOP exterior_10_74050e4d, hubs 200 apart had patches of 120 each and the
-// second cleared part of the first: 60-220 obtuse triangles at the 60 s limit, 1 since. This
-// domain met the bounds with the overlap too: the test guards close hubs, both patched.
+// A patch's cleared disk keeps clear of the patches made before it, and leaves a hub still to
+// come half the gap: 0.90 each here. On CG:SHOP exterior_10_74050e4d, hubs 200 apart had patches
+// of 120 each and the second cleared part of the first: 60-220 obtuse triangles at the 60 s limit.
+// With the second squeezed to 0.61 by the first, this domain stalled at 5 bad triangles.
 TEST(HubPatch, the_pipeline_meets_the_bounds_at_two_hubs_close_together) {
   const Domain d = two_strip_hubs_close_together();
   Mesh start = test::cvt_mesh(d, 2000);
   EXPECT_EQ(detail::patch_strip_hubs(start, MeshOptions{}, 0).size(), 2u);
+  EXPECT_EQ(test::verify_valid(start), "");
+  expect_the_pipeline_meets_the_bounds(d, 2000);
+}
+
+/// CG:SHOP exterior_10_74050e4d scaled by 1/100: the boundary corner (78.5, 68) is split by a
+/// segment into a 0.18-degree strip and a 173-degree sector; 2 to its right the corner (80.5, 68)
+/// has a 6.1-degree strip. Four more hubs elsewhere (strips of 0.76 to 6.5 degrees).
+Domain needle_strip_hub_beside_a_narrow_strip_hub() {
+  Domain d;
+  d.points = {Point2(82.5, 0), Point2(78.5, 42), Point2(80.5, 68), Point2(78.5, 68), Point2(6, 59.5),
+              Point2(4, 59.5), Point2(2, 40), Point2(0, 25), Point2(6, 23), Point2(6, 7)};
+  d.segments = {{7, 9}, {9, 0}, {0, 2}, {2, 3}, {3, 5}, {5, 7},                                  // the boundary
+                {0, 1}, {1, 2}, {3, 4}, {4, 5}, {5, 6}, {6, 7}, {7, 8}, {8, 9}};  // constraints
+  return d;
+}
+
+// The first patch no longer takes the gap between two hubs: the 6-degree hub's patch came first
+// (1.2 wide) and squeezed the needle strip's to 0.61, short of its strip's apex triangle, and the
+// instance kept 15 obtuse triangles at that seam. Each now keeps up to half the gap (0.9 here),
+// and the narrowest strips are planned first. (The spacing a patch grades to is also the
+// area-weighted median now: the plain median, 100 times finer beside the needle strip, made a
+// patch of 49k vertices whose seam with the coarse mesh kept 88 obtuse triangles.)
+TEST(HubPatch, the_pipeline_meets_the_bounds_at_a_needle_strip_hub_beside_a_narrow_strip_hub) {
+  const Domain d = needle_strip_hub_beside_a_narrow_strip_hub();
+  Mesh start = test::cvt_mesh(d, 2000);
+  const std::vector<Point2> patched = detail::patch_strip_hubs(start, MeshOptions{}, 0);
+  ASSERT_FALSE(patched.empty());
+  EXPECT_EQ(patched.front(), Point2(78.5, 68));
   EXPECT_EQ(test::verify_valid(start), "");
   expect_the_pipeline_meets_the_bounds(d, 2000);
 }

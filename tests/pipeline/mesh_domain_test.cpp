@@ -76,5 +76,16 @@ TEST(MeshDomain, a_long_boundary_side_of_a_narrow_strip_is_divided_and_meets_the
   expect_cgshop_instance_meets_the_bounds("simple-polygon-exterior_20_87cff693.instance.json");  // about 1 s
 }
 
+// A plateau of the repair's search: a segment vertex left with two right triangles on one side
+// (90 + 90 on a straight wall), where every candidate edit scores worse than the region as it is
+// (a split adds a vertex of degree four, a flip or a move keeps the right angle). Two CG:SHOP
+// exterior instances stayed at 90.000 and 90.034 degrees for 150 iterations. On a plateau the
+// repair now kicks: every fifth iteration a cluster takes its best candidate even when worse, and
+// the search goes on from there (the best mesh so far is kept aside).
+TEST(MeshDomain, a_segment_vertex_with_two_right_triangles_on_a_side_meets_the_bounds) {
+  expect_cgshop_instance_meets_the_bounds("simple-polygon-exterior_80_22d34c7e.instance.json");   // about 2 s
+  expect_cgshop_instance_meets_the_bounds("simple-polygon-exterior_100_37aaf06f.instance.json");  // about 5 s
+}
+
 }  // namespace
 }  // namespace acute

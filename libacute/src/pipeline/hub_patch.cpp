@@ -120,19 +120,31 @@ bool plan_walls(const Mesh& mesh, VertexHandle vh, double strip_below, HubPlan& 
   return true;
 }
 
-/// The median edge length of the mesh between radius and 2 radius from the hub.
+/// The typical edge length of the mesh between radius and 2 radius from the hub: the median by
+/// area (each edge weighted by its squared length). A plain median counts edges, and the fine
+/// mesh along a needle strip's walls has most of them: around a 0.18-degree strip it was 0.29
+/// where the rest of the annulus is 15-20 across, and the patch made that fine met the coarse
+/// mesh in a seam of 88 obtuse triangles.
 double spacing_around(const Mesh& mesh, VertexHandle hub, double radius) {
   const Point2 c = point2(mesh, hub);
-  std::vector<double> lengths;
+  std::vector<std::pair<double, double>> lengths;  // (length, weight)
+  double total = 0;
   for (auto v : vertices_near(mesh, hub, 2 * radius))
     for (auto w : mesh.vv_range(v)) {
       const Point2 m = 0.5 * (point2(mesh, v) + point2(mesh, w));
       const double r = (m - c).norm();
-      if (r > radius && r < 2 * radius) lengths.push_back((point2(mesh, w) - point2(mesh, v)).norm());
+      if (r > radius && r < 2 * radius) {
+        const double l = (point2(mesh, w) - point2(mesh, v)).norm();
+        lengths.emplace_back(l, l * l);
+        total += l * l;
+      }
     }
   if (lengths.empty()) return 0;
-  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2), lengths.end());
-  return lengths[lengths.size() / 2];
+  std::sort(lengths.begin(), lengths.end());
+  double below = 0;
+  for (const auto& [l, weight] : lengths)
+    if ((below += weight) >= 0.5 * total) return l;
+  return lengths.back().first;
 }
 
 bool insert_patch(Mesh& mesh, const HubPlan& plan, const Mesh& log_mesh, double s_inner) {
@@ -188,16 +200,18 @@ bool insert_patch(Mesh& mesh, const HubPlan& plan, const Mesh& log_mesh, double 
 /// An acute mesh of the log-polar domain, its overhang (x > kLogDepth) excepted. The repair is
 /// sometimes slow on the right-angled corners where the walls meet the inner side; a fresh seed
 /// usually is not: a few attempts of at most kAttemptIterations repair iterations each (a
-/// successful one takes 10-20 and some 0.05-0.5 s; a stuck one 0.2 s per iteration), and a third
-/// of `seconds` each when > 0. (Without a time limit only the iteration cap: the same patches on a
-/// slow machine or a sanitizer build, where a 20 s clock was too short.)
-bool mesh_log_domain(const Domain& domain, MeshOptions options, unsigned seed, double seconds, Mesh& out) {
+/// successful one takes 10-20 and some 0.05-0.5 s; a stuck one 0.2 s per iteration). No attempt
+/// runs under a clock, so a patch is the same with or without a time limit and on any machine
+/// (a clock-cut CVT made runs under --time-limit differ by a few patch vertices, and sometimes
+/// fail); the `deadline` only stops further attempts.
+bool mesh_log_domain(const Domain& domain, MeshOptions options, unsigned seed, std::chrono::steady_clock::time_point deadline, Mesh& out) {
   constexpr int kAttempts = 3;
   constexpr int kAttemptIterations = 25;
   for (int attempt = 0; attempt < kAttempts; ++attempt) {
+    if (attempt > 0 && std::chrono::steady_clock::now() > deadline) return false;
     options.seed = seed + static_cast<unsigned>(attempt);
     options.max_iterations = kAttemptIterations;
-    options.time_limit_s = seconds > 0 ? seconds / kAttempts : 0;
+    options.time_limit_s = 0;
     MeshResult r;
     const auto t0 = std::chrono::steady_clock::now();
     try {
@@ -224,15 +238,23 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
   const double strip_below = options.min_angle_deg * kPi / 180;
   if (!(strip_below > 0)) return {};
   const bool trace = std::getenv("ACUTE_TRACE") != nullptr;
+  const auto deadline = seconds > 0 ? std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                                              std::chrono::duration<double>(seconds))
+                                    : std::chrono::steady_clock::time_point::max();
   std::vector<HubPlan> plans;
   std::vector<Point2> input_points;  // features too, on a segment or not (collected once: no O(n) pass per hub)
   for (auto v : mesh.vertices())
     if (!mesh.status(v).deleted() && is_input(mesh, v)) input_points.push_back(point2(mesh, v));
+  // The narrowest strips first: when there are more than kMaxHubs, they are the ones patched.
+  std::vector<HubPlan> candidates;
   for (auto vh : mesh.vertices()) {
     if (mesh.status(vh).deleted() || !is_input(mesh, vh)) continue;
     HubPlan plan;
-    if (!plan_walls(mesh, vh, strip_below, plan)) continue;
-    const Point2 c = point2(mesh, vh);
+    if (plan_walls(mesh, vh, strip_below, plan)) candidates.push_back(std::move(plan));
+  }
+  std::stable_sort(candidates.begin(), candidates.end(), [](const HubPlan& a, const HubPlan& b) { return a.narrowest < b.narrowest; });
+  for (HubPlan& plan : candidates) {
+    const Point2 c = point2(mesh, plan.hub);
     double radius = INFINITY;
     for (const Wall& w : plan.walls) radius = std::min(radius, kWallShare * w.length);
     for (const auto& ends : segment_table(mesh))
@@ -285,9 +307,16 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
       if (!(spacing > 0)) continue;
     }
     // Two hubs' disks (with the margins they clear) must not overlap: the second patch would
-    // remove part of the first (a CG:SHOP instance's hubs 200 apart had patches of 120 each).
+    // remove part of the first (a CG:SHOP instance's hubs 200 apart had patches of 120 each). Nor
+    // may the first take the gap: a hub still to come keeps up to half of it. (Squeezed to half
+    // its radius, a patch ends inside its strips, short of their apex triangles, and the repair
+    // stalls at that seam: 15 obtuse triangles on a 0.18-degree strip 200 from a 6-degree one.)
     double room = plan.radius;
     for (const auto& [centre, r] : placed) room = std::min(room, kHubGap * (point2(mesh, plan.hub) - centre).norm() / kClearMargin - r);
+    for (const HubPlan* other = &plan + 1; other != plans.data() + plans.size(); ++other) {
+      const double gap = kHubGap * (point2(mesh, plan.hub) - point2(mesh, other->hub)).norm() / kClearMargin;
+      room = std::min(room, gap - std::min(other->radius, 0.5 * gap));
+    }
     if (room < plan.radius) {
       if (!(room > 0)) continue;
       plan.radius = room;
@@ -331,9 +360,8 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
     const double outer_size = spacing / plan.radius;
     lo.max_size = kMaxLogSize;
     lo.size_cap = [outer_size, floor_size](const Point2& q) { return std::clamp(outer_size * std::exp(kLogDepth - q.x()), floor_size, kMaxLogSize); };
-    const double share = seconds > 0 ? seconds / static_cast<double>(plans.size()) : 0;
     Mesh log_mesh;
-    if (!mesh_log_domain(log_domain, lo, options.seed, share, log_mesh)) {
+    if (std::chrono::steady_clock::now() > deadline || !mesh_log_domain(log_domain, lo, options.seed, deadline, log_mesh)) {
       if (trace) std::fprintf(stderr, "hub patch (%.6g, %.6g): no acute log-polar mesh, hub left as it was\n", point2(mesh, plan.hub).x(), point2(mesh, plan.hub).y());
       continue;
     }

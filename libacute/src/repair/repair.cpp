@@ -41,6 +41,12 @@ namespace {
 /// Iterations without a new best before giving up: stuck clusters get fresh random re-samplings
 /// every iteration, so persistence pays (the time limit still bounds the run).
 constexpr int kStagnationLimit = 150;
+/// On a plateau (this many iterations without a new best), every kKickEvery-th iteration each
+/// cluster that no candidate improves takes its best candidate anyway: a local optimum of the
+/// search (a segment vertex with two right triangles on one side, where every single edit scores
+/// worse) is left for a neighbouring one. The best mesh so far is kept aside, so a kick costs
+/// nothing when it leads nowhere.
+constexpr int kKickAfter = 10, kKickEvery = 5;
 
 class Repairer {
  public:
@@ -82,6 +88,7 @@ class Repairer {
         ++stagnation;
       }
       stuck_ = stagnation;
+      kick_ = stagnation >= kKickAfter && stagnation % kKickEvery == 0;
       if (bad == 0) {
         result_.status = RepairStatus::Converged;
         break;
@@ -295,11 +302,12 @@ class Repairer {
       }
       Mesh best;
       Score best_score = base;
+      kicked_ = false;
       search(region, stuck_ > 1, best, best_score);
       if (trace_)
         std::fprintf(stderr, "  best: candidate %d, infeasible %zu bad %zu worst %.4f%s\n", best_candidate_, best_score.infeasible, best_score.bad, best_score.worst,
-                     best_score < base ? " (written back)" : " (kept the region as it was)");
-      if (best_score < base) {
+                     best_score < base ? " (written back)" : kicked_ ? " (written back: a kick)" : " (kept the region as it was)");
+      if (best_score < base || kicked_) {
         if (paranoid_) {
           auto area = [](const Mesh& m) { double a = 0; for (auto fh : m.faces()) { const auto p = face_points(m, fh); a += signed_area2(p[0], p[1], p[2]); } return a; };
           const double a0 = area(region.sub), a1 = area(best);
@@ -459,6 +467,13 @@ class Repairer {
     for (auto& o : level1)
       if (o.score < best_score) best_score = o.score, best = o.mesh, best_candidate_ = o.candidate, best_kind_ = o.kind;
     const Score base = score(region.sub, region.forced);
+    // A kick (see kKickEvery): the best first-level outcome that changes the region, worse or not.
+    if (kick_ && best_candidate_ == 0)
+      for (auto& o : level1)
+        if (base < o.score) {
+          best = o.mesh, best_score = o.score, best_candidate_ = o.candidate, best_kind_ = o.kind, kicked_ = true;
+          break;
+        }
     if (!deep || best_score < base) return;
     std::sort(level1.begin(), level1.end(), [](const Outcome& a, const Outcome& b) { return a.score < b.score; });
     // Outcomes that score as the region did are left out: mostly no-ops (smoothing alone, a flip the
@@ -769,6 +784,8 @@ class Repairer {
   double paranoid_area_ = 0;
   std::chrono::steady_clock::time_point t0_;
   int stuck_ = 0;
+  bool kick_ = false;    ///< this iteration, a cluster no candidate improves takes its best worse one
+  bool kicked_ = false;  ///< the current cluster's search returned such a one
   std::uint32_t remesh_seed_ = 0;
   bool trace_ = std::getenv("ACUTE_TRACE") != nullptr;
   bool paranoid_ = std::getenv("ACUTE_PARANOID") != nullptr;
