@@ -10,6 +10,7 @@ acute_add_test(repair_tests
     repair/region_test.cpp
     repair/relocation_test.cpp
     repair/repair_test.cpp
+    repair/sector_refan_test.cpp
   LIBS acute_pipeline acute_io)
 target_include_directories(repair_tests PRIVATE ${GMPXX_INCLUDE_DIR})
 target_link_libraries(repair_tests PRIVATE ${GMPXX_LIBRARY} ${GMP_LIBRARY})

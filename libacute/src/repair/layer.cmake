@@ -12,6 +12,7 @@ acute_add_layer(repair
     src/repair/region.cpp
     src/repair/relocation.cpp
     src/repair/repair.cpp
+    src/repair/sector_refan.cpp
   DEPENDS acute_ops acute_delaunay)
 # Exact rationals for the non-obtuse mode (Steiner points on slanted segments are not doubles).
 find_path(GMPXX_INCLUDE_DIR gmpxx.h REQUIRED)

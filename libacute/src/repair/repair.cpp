@@ -14,6 +14,7 @@
 #include "repair/local_remesh.h"
 #include "repair/polar_fan.h"
 #include "repair/region.h"
+#include "repair/sector_refan.h"
 
 #include <acute/core/errors.h>
 
@@ -502,7 +503,7 @@ class Repairer {
   enum CandidateKind : int {
     kSmooth, kSplitMidpoint, kSplitFoot, kCircumcentre, kCentroid, kBisector, kLinkSplit, kWallSplit, kLinkFlip,
     kCompoundSplit, kNearBridges, kAllBridges, kCollapse, kRemoveCorner, kRemoveLowDegree, kRemoveLowDegreeRest,
-    kWedge, kHub, kEqualiseApexes, kRemesh, kCandidateKinds
+    kWedge, kHub, kEqualiseApexes, kRemesh, kRefan, kCandidateKinds
   };
 
   /// Applies each candidate operation to a copy of sub0 (then relocation) and collects the results.
@@ -633,6 +634,17 @@ class Repairer {
         flip(sub, eh);
         return true;
       });
+    joint_first = false;
+
+    // Re-fan a sector of a worst-face vertex that holds too few triangles for the max bound (two
+    // right triangles on a segment vertex's straight side): more spokes, relaxed together. Only
+    // once the repair is stuck (like the re-sampling): tried first, it took paths that stalled
+    // elsewhere (a strip hub's patch, 1 bad triangle for 150 iterations).
+    joint_first = true;
+    if (remesh)
+      for (auto vh : v)
+        for (const detail::CrowdedSector& sector : detail::crowded_sectors(sub0, vh, bounds_.max_deg - bounds_.margin_deg))
+          attempt(kRefan, [&, vh, sector](Mesh& sub) { return detail::refan_sector(sub, vh, sector); });
     joint_first = false;
 
     // Compound: split every splittable edge of the worst face at its midpoint (local refinement for
