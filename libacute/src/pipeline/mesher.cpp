@@ -106,10 +106,53 @@ std::string unsatisfiable_note(const Domain& domain, const MeshOptions& o) {
   return "unsatisfiable bounds at " + std::to_string(sectors.size()) + " input corner(s) of this domain, e.g. " + what;
 }
 
+/// Restarts are for a few stuck triangles, not for a mesh the repair could not get near the bounds.
+constexpr std::size_t kRestartAtMost = 16;
+/// A restart's seed: far from the seeds a user steps through (1, 2, 3 ...).
+constexpr unsigned kRestartSeedStep = 7919;
+
+/// One run of the method; `stalled` tells whether an acute repair ended on its own iteration
+/// cap or stagnation (not at the time limit, the vertex budget or a cancel).
+MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, bool& stalled);
+
 }  // namespace
 
 MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
   check_options(options);
+  const auto start = std::chrono::steady_clock::now();
+  bool stalled = false;
+  MeshResult best = generate_mesh_once(domain, options, stalled);
+  // The repair's search is local: on some domains one seed's start leads it into a plateau (a
+  // few triangles that no edit improves) that another seed's start avoids. A run that stalls
+  // with a few bad triangles is restarted from another seed, within what is left of the time
+  // limit; the best result is kept.
+  const bool satisfiable = unsatisfiable_note(domain, options).empty();
+  for (int k = 1; k <= options.restarts; ++k) {
+    if (options.method != Method::Acute || best.status != MeshStatus::BoundsNotMet || !stalled || options.max_iterations > 0 || !satisfiable ||
+        best.remaining.size() > kRestartAtMost)
+      break;
+    MeshOptions again = options;
+    again.seed = options.seed + static_cast<unsigned>(k) * kRestartSeedStep;
+    if (options.time_limit_s > 0) {
+      again.time_limit_s = options.time_limit_s - seconds_since(start);
+      if (again.time_limit_s < 0.25 * options.time_limit_s) break;
+    }
+    MeshResult r = generate_mesh_once(domain, again, stalled);
+    const std::string what = "the repair stalled with " + std::to_string(best.remaining.size()) + " bad triangle(s); restarted with seed " +
+                             std::to_string(again.seed) + ": " + (r.status == MeshStatus::Ok ? "bounds met" : std::to_string(r.remaining.size()) + " left");
+    if (r.status == MeshStatus::Ok || r.remaining.size() < best.remaining.size()) {
+      r.iterations += best.iterations;
+      best = std::move(r);
+    }
+    best.notes.push_back(what);
+  }
+  return best;
+}
+
+namespace {
+
+MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, bool& stalled) {
+  stalled = false;
   const auto start = std::chrono::steady_clock::now();
   MeshResult result;
   auto notify = [&](const char* phase) {
@@ -219,6 +262,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       if (options.observer)
         params.observer = [&](const RepairProgress& p) { options.observer(MeshProgress{"repair", p.iteration, p.bad, 0}); };
       const RepairResult r = repair_acute(result.mesh, params);
+      stalled = r.status == RepairStatus::IterationLimit;
       result.iterations += r.iterations;
       result.status = r.status == RepairStatus::Converged ? MeshStatus::Ok : MeshStatus::BoundsNotMet;
       // A converged repair left nothing bad (its last scan found none): no whole-mesh scan again.
@@ -241,5 +285,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
                            " requested: the domain's small features need a finer size than the request gives");
   return result;
 }
+
+}  // namespace
 
 }  // namespace acute
