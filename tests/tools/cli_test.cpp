@@ -304,4 +304,12 @@ TEST(Progress, ShownOnATerminalUnlessQuiet) {
   EXPECT_EQ(quiet.find('\033'), std::string::npos) << quiet;
 }
 
+TEST(Restarts, ANegativeCountIsRefusedAndZeroRunsOnce) {
+  const CliRun bad = acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_restarts.off")) + " --restarts -1", "restarts_bad");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--restarts"), std::string::npos) << bad.err;
+  EXPECT_FALSE(fs::exists(out("A_restarts.off")));
+  EXPECT_EQ(acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_restarts.off")) + " --restarts 0 -q", "restarts_0").code, 0);
+}
+
 }  // namespace
