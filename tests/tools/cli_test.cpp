@@ -305,6 +305,7 @@ TEST(Progress, ShownOnATerminalUnlessQuiet) {
 }
 
 TEST(Restarts, ANegativeCountIsRefusedAndZeroRunsOnce) {
+  fs::remove(out("A_restarts.off"));
   const CliRun bad = acute("mesh " + quoted(mesh_file("A.poly")) + " -o " + quoted(out("A_restarts.off")) + " --restarts -1", "restarts_bad");
   EXPECT_EQ(bad.code, 2);
   EXPECT_NE(bad.err.find("--restarts"), std::string::npos) << bad.err;
