@@ -77,6 +77,17 @@ MeshResult expect_the_pipeline_meets_the_bounds(const Domain& d, std::size_t ver
   return r;
 }
 
+/// The hubs patched on d's CVT start at about `vertices` vertices, in the order they were patched;
+/// the patched start checked valid and conforming.
+std::vector<Point2> expect_a_valid_patched_start(const Domain& d, std::size_t vertices) {
+  Mesh start = test::cvt_mesh(d, vertices);
+  const double area = test::total_area(start);
+  std::vector<Point2> hubs = detail::patch_strip_hubs(start, MeshOptions{}, 0);
+  EXPECT_EQ(test::verify_valid(start), "");
+  EXPECT_EQ(test::verify_conforms(start, d, area), "");
+  return hubs;
+}
+
 struct HubCase {
   const char* name;
   Domain domain;
@@ -219,9 +230,7 @@ Domain two_strip_hubs_close_together() {
 // With the second squeezed to 0.61 by the first, this domain stalled at 5 bad triangles.
 TEST(HubPatch, the_pipeline_meets_the_bounds_at_two_hubs_close_together) {
   const Domain d = two_strip_hubs_close_together();
-  Mesh start = test::cvt_mesh(d, 2000);
-  EXPECT_EQ(detail::patch_strip_hubs(start, MeshOptions{}, 0).size(), 2u);
-  EXPECT_EQ(test::verify_valid(start), "");
+  EXPECT_EQ(expect_a_valid_patched_start(d, 2000).size(), 2u);
   expect_the_pipeline_meets_the_bounds(d, 2000);
 }
 
@@ -245,11 +254,9 @@ Domain needle_strip_hub_beside_a_narrow_strip_hub() {
 // patch of 49k vertices whose seam with the coarse mesh kept 88 obtuse triangles.)
 TEST(HubPatch, the_pipeline_meets_the_bounds_at_a_needle_strip_hub_beside_a_narrow_strip_hub) {
   const Domain d = needle_strip_hub_beside_a_narrow_strip_hub();
-  Mesh start = test::cvt_mesh(d, 2000);
-  const std::vector<Point2> patched = detail::patch_strip_hubs(start, MeshOptions{}, 0);
+  const std::vector<Point2> patched = expect_a_valid_patched_start(d, 2000);
   ASSERT_FALSE(patched.empty());
   EXPECT_EQ(patched.front(), Point2(78.5, 68));
-  EXPECT_EQ(test::verify_valid(start), "");
   expect_the_pipeline_meets_the_bounds(d, 2000);
 }
 

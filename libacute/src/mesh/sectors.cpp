@@ -63,6 +63,27 @@ std::vector<SegmentSector> segment_sectors(const Mesh& mesh, VertexHandle vh, bo
   return out;
 }
 
+void for_each_sector(const Mesh& mesh, VertexHandle vh, int max_triangles, const SectorVisitor& visit) {
+  HalfedgeHandle start;
+  for (auto heh : mesh.voh_range(vh))
+    if (!mesh.is_boundary(heh) && is_segment_or_boundary(mesh, heh)) start = heh;
+  const bool closed = !start.is_valid();
+  if (closed) {
+    if (mesh.is_boundary(vh)) return;
+    start = mesh.halfedge_handle(vh);
+  }
+  const WallTest is_wall = [&](HalfedgeHandle spoke) { return !closed && is_segment_or_boundary(mesh, spoke); };
+  int budget = max_triangles;
+  for (HalfedgeHandle h = start;;) {
+    const SectorSweep sector = sweep_sector(mesh, h, is_wall, budget);
+    if (sector.how == SectorEnd::Unfinished) return;
+    budget -= sector.triangles;
+    visit(h, sector, closed);
+    h = sector.end;
+    if (h == start || mesh.is_boundary(h)) return;
+  }
+}
+
 HalfedgeHandle segment_spoke_along(const Mesh& mesh, VertexHandle vh, const Point2& u) {
   const Point2 c = point2(mesh, vh);
   for (auto spoke : mesh.voh_range(vh))

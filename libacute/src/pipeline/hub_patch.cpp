@@ -64,6 +64,7 @@ struct HubPlan {
   double narrowest = 0;
   double radius = 0;
   double cap = 0;  ///< the farthest it may reach past its strips' apex triangles
+  bool patched = false;
 };
 
 /// The hub's walls in counter-clockwise order, or empty when vh is no strip hub.
@@ -127,24 +128,23 @@ bool plan_walls(const Mesh& mesh, VertexHandle vh, double strip_below, HubPlan& 
 /// mesh in a seam of 88 obtuse triangles.
 double spacing_around(const Mesh& mesh, VertexHandle hub, double radius) {
   const Point2 c = point2(mesh, hub);
-  std::vector<std::pair<double, double>> lengths;  // (length, weight)
-  double total = 0;
+  std::vector<double> lengths;
+  double total = 0;  // of the squared lengths
   for (auto v : vertices_near(mesh, hub, 2 * radius))
     for (auto w : mesh.vv_range(v)) {
       const Point2 m = 0.5 * (point2(mesh, v) + point2(mesh, w));
       const double r = (m - c).norm();
       if (r > radius && r < 2 * radius) {
-        const double l = (point2(mesh, w) - point2(mesh, v)).norm();
-        lengths.emplace_back(l, l * l);
-        total += l * l;
+        lengths.push_back((point2(mesh, w) - point2(mesh, v)).norm());
+        total += lengths.back() * lengths.back();
       }
     }
   if (lengths.empty()) return 0;
   std::sort(lengths.begin(), lengths.end());
   double below = 0;
-  for (const auto& [l, weight] : lengths)
-    if ((below += weight) >= 0.5 * total) return l;
-  return lengths.back().first;
+  for (const double l : lengths)
+    if ((below += l * l) >= 0.5 * total) return l;
+  return lengths.back();
 }
 
 bool insert_patch(Mesh& mesh, const HubPlan& plan, const Mesh& log_mesh, double s_inner) {
@@ -203,12 +203,12 @@ bool insert_patch(Mesh& mesh, const HubPlan& plan, const Mesh& log_mesh, double 
 /// successful one takes 10-20 and some 0.05-0.5 s; a stuck one 0.2 s per iteration). No attempt
 /// runs under a clock, so a patch is the same with or without a time limit and on any machine
 /// (a clock-cut CVT made runs under --time-limit differ by a few patch vertices, and sometimes
-/// fail); the `deadline` only stops further attempts.
+/// fail); past the `deadline` no attempt starts.
 bool mesh_log_domain(const Domain& domain, MeshOptions options, unsigned seed, std::chrono::steady_clock::time_point deadline, Mesh& out) {
   constexpr int kAttempts = 3;
   constexpr int kAttemptIterations = 25;
   for (int attempt = 0; attempt < kAttempts; ++attempt) {
-    if (attempt > 0 && std::chrono::steady_clock::now() > deadline) return false;
+    if (std::chrono::steady_clock::now() > deadline) return false;
     options.seed = seed + static_cast<unsigned>(attempt);
     options.max_iterations = kAttemptIterations;
     options.time_limit_s = 0;
@@ -273,7 +273,6 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
     if (static_cast<int>(plans.size()) >= kMaxHubs) break;
   }
   std::vector<Point2> patched;
-  std::vector<std::pair<Point2, double>> placed;  // the patches made: centre, radius
   const std::size_t vertices_before = mesh.n_vertices();
   for (HubPlan& plan : plans) {
     double spacing = spacing_around(mesh, plan.hub, plan.radius);
@@ -312,10 +311,11 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
     // its radius, a patch ends inside its strips, short of their apex triangles, and the repair
     // stalls at that seam: 15 obtuse triangles on a 0.18-degree strip 200 from a 6-degree one.)
     double room = plan.radius;
-    for (const auto& [centre, r] : placed) room = std::min(room, kHubGap * (point2(mesh, plan.hub) - centre).norm() / kClearMargin - r);
-    for (const HubPlan* other = &plan + 1; other != plans.data() + plans.size(); ++other) {
-      const double gap = kHubGap * (point2(mesh, plan.hub) - point2(mesh, other->hub)).norm() / kClearMargin;
-      room = std::min(room, gap - std::min(other->radius, 0.5 * gap));
+    for (const HubPlan& other : plans) {
+      const bool before = &other < &plan;  // planned before: patched with its radius, or not at all
+      if (&other == &plan || (before && !other.patched)) continue;
+      const double gap = kHubGap * (point2(mesh, plan.hub) - point2(mesh, other.hub)).norm() / kClearMargin;
+      room = std::min(room, gap - (before ? other.radius : std::min(other.radius, 0.5 * gap)));
     }
     if (room < plan.radius) {
       if (!(room > 0)) continue;
@@ -361,7 +361,7 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
     lo.max_size = kMaxLogSize;
     lo.size_cap = [outer_size, floor_size](const Point2& q) { return std::clamp(outer_size * std::exp(kLogDepth - q.x()), floor_size, kMaxLogSize); };
     Mesh log_mesh;
-    if (std::chrono::steady_clock::now() > deadline || !mesh_log_domain(log_domain, lo, options.seed, deadline, log_mesh)) {
+    if (!mesh_log_domain(log_domain, lo, options.seed, deadline, log_mesh)) {
       if (trace) std::fprintf(stderr, "hub patch (%.6g, %.6g): no acute log-polar mesh, hub left as it was\n", point2(mesh, plan.hub).x(), point2(mesh, plan.hub).y());
       continue;
     }
@@ -379,7 +379,7 @@ std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, dou
       continue;
     }
     patched.push_back(point2(mesh, plan.hub));
-    placed.emplace_back(point2(mesh, plan.hub), plan.radius);
+    plan.patched = true;
   }
   if (!patched.empty()) collect_garbage(mesh);
   if (trace && !plans.empty()) std::fprintf(stderr, "hub patches: %zu of %zu hubs, %zu vertices before, %zu after\n", patched.size(), plans.size(), vertices_before, mesh.n_vertices());

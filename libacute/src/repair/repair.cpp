@@ -381,27 +381,11 @@ class Repairer {
   /// triangle is exempt from the min bound: a log-polar hub fans its wide sectors finely). Frozen
   /// border vertices of a region copy are skipped by the caller.
   std::size_t infeasible_sectors(const Mesh& sub, VertexHandle vh, bool exempt) const {
-    HalfedgeHandle start;
-    for (auto heh : sub.voh_range(vh))
-      if (!sub.is_boundary(heh) && is_segment_or_boundary(sub, heh)) start = heh;
-    const bool closed = !start.is_valid();  // no wall: one sector, the full star
-    if (closed) {
-      if (sub.is_boundary(vh)) return 0;
-      start = sub.halfedge_handle(vh);
-    }
-    const WallTest is_wall = [&](HalfedgeHandle out) { return !closed && is_segment_or_boundary(sub, out); };
     std::size_t count = 0;
-    int budget = 64;  // faces swept over all the sectors
-    // Sector after sector counter-clockwise, until back at the start or at the boundary.
-    for (HalfedgeHandle h = start;;) {
-      const SectorSweep sector = sweep_sector(sub, h, is_wall, budget);
-      if (sector.how == SectorEnd::Unfinished) break;
-      budget -= sector.triangles;
+    for_each_sector(sub, vh, 64, [&](HalfedgeHandle, const SectorSweep& sector, bool) {
       const double share = sector.degrees / sector.triangles;
       if (share >= bounds_.max_deg - bounds_.margin_deg || (!exempt && sector.degrees >= bounds_.min_deg && share < bounds_.min_deg)) ++count;
-      h = sector.end;
-      if (h == start || sub.is_boundary(h)) break;
-    }
+    });
     return count;
   }
 

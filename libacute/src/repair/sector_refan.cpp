@@ -20,24 +20,10 @@ constexpr double kAimDegrees = 60.0;
 
 std::vector<CrowdedSector> crowded_sectors(const Mesh& mesh, VertexHandle apex, double max_share) {
   std::vector<CrowdedSector> out;
-  HalfedgeHandle start;
-  for (auto heh : mesh.voh_range(apex))
-    if (!mesh.is_boundary(heh) && is_segment_or_boundary(mesh, heh)) start = heh;
-  const bool closed = !start.is_valid();
-  if (closed) {
-    if (mesh.is_boundary(apex) || is_input(mesh, apex)) return out;
-    start = mesh.halfedge_handle(apex);
-  }
-  const WallTest is_wall = [&](HalfedgeHandle spoke) { return !closed && is_segment_or_boundary(mesh, spoke); };
-  int budget = 64;
-  for (HalfedgeHandle h = start;;) {
-    const SectorSweep sector = sweep_sector(mesh, h, is_wall, budget);
-    if (sector.how == SectorEnd::Unfinished || sector.how == SectorEnd::Border) break;
-    budget -= sector.triangles;
-    if (sector.degrees / sector.triangles >= max_share) out.push_back(CrowdedSector{h, sector.degrees, sector.triangles, closed});
-    h = sector.end;
-    if (h == start || mesh.is_boundary(h)) break;
-  }
+  for_each_sector(mesh, apex, 64, [&](HalfedgeHandle first, const SectorSweep& sector, bool closed) {
+    if (sector.how == SectorEnd::Border || (closed && is_input(mesh, apex))) return;
+    if (sector.degrees / sector.triangles >= max_share) out.push_back(CrowdedSector{first, sector.degrees, sector.triangles, closed});
+  });
   return out;
 }
 
@@ -45,14 +31,13 @@ bool refan_sector(Mesh& mesh, VertexHandle apex, const CrowdedSector& sector) {
   const Point2 c = point2(mesh, apex);
   // Everything is read before the first edit (removals invalidate the handles).
   std::vector<VertexHandle> inner;  // far ends of the interior spokes
+  const int spokes = sector.closed ? sector.triangles : sector.triangles + 1;  // a wall sector's two walls included
   double length = 0;
-  int spokes = 0;
   HalfedgeHandle h = sector.first;
-  for (int t = 0; t <= sector.triangles; ++t) {
+  for (int t = 0; t < spokes; ++t) {
     const VertexHandle w = mesh.to_vertex_handle(h);
     length += (point2(mesh, w) - c).norm();
-    ++spokes;
-    const bool interior = sector.closed ? t < sector.triangles : t > 0 && t < sector.triangles;
+    const bool interior = sector.closed || (t > 0 && t < sector.triangles);
     if (interior && mesh.data(w).kind == VertexKind::Free) inner.push_back(w);
     h = mesh.opposite_halfedge_handle(mesh.prev_halfedge_handle(h));  // the next spoke counter-clockwise
   }

@@ -39,6 +39,16 @@ bool is_segment_or_boundary(const Mesh& mesh, HalfedgeHandle spoke);
 /// (Border); Unfinished after max_triangles faces. A start without a face: Border, no triangles.
 SectorSweep sweep_sector(const Mesh& mesh, HalfedgeHandle start, const WallTest& is_wall, int max_triangles = 1024);
 
+/// Called for each sector of a vertex's star: `first` its spoke counter-clockwise, `closed` when the
+/// star has no wall (one sector, the whole star).
+using SectorVisitor = std::function<void(HalfedgeHandle first, const SectorSweep& sector, bool closed)>;
+
+/// Visits the sectors of vh between its segment or boundary spokes counter-clockwise (its whole star
+/// when it has none; nothing for a boundary vertex without such a spoke), sweeping at most
+/// max_triangles faces in all; a fan that reaches a boundary halfedge that is no wall (SectorEnd::Border,
+/// e.g. a region copy's frozen border) is visited and ends the walk.
+void for_each_sector(const Mesh& mesh, VertexHandle vh, int max_triangles, const SectorVisitor& visit);
+
 /// A whole sector at a vertex: the fan between two consecutive segment spokes.
 struct SegmentSector {
   HalfedgeHandle first, last;  ///< the segment spokes it lies between, counter-clockwise from first to last
