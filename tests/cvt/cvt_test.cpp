@@ -125,6 +125,40 @@ TEST(Sampling, a_narrow_sector_is_a_strip_graded_to_its_width) {
   expect_constraints_kept(mesh, d);
 }
 
+TEST(Sampling, a_coarse_needle_tip_is_one_apex_triangle_out_to_half_its_wall_and_a_hub_strip_to_a_third) {
+  // At a size far above the strip's width, the apex triangle runs as far as its cap. A needle's tip
+  // (the domain's only sector there) is rebuilt by the repair's polar fan out to half its shorter
+  // wall: the start cuts both walls there, with no wall vertices inside that the fan would remove
+  // (debug2's 10,000 tips were 10% of its start). A strip beside a wide sector (a hub) keeps a
+  // third: its log-polar patch is planned from the start's apex triangles.
+  const double theta = 2.0 * 3.14159265358979323846 / 180.0;
+  auto first_cuts = [](const Domain& d, VertexHandle apex) {
+    const Mesh cdt = build_cdt(d);
+    const Mesh mesh = sample_domain(d, cdt, SizeField::uniform(1.0), {});
+    std::vector<double> radii;
+    for (auto w : mesh.vv_range(apex))
+      if (mesh.data(w).kind == VertexKind::OnSegment) radii.push_back((point2(mesh, w) - point2(mesh, apex)).norm());
+    std::sort(radii.begin(), radii.end());
+    return radii;
+  };
+  const Domain needle = test::polygon_domain({{0, 0}, {10, 0}, {10 * std::cos(theta), 10 * std::sin(theta)}}, "needle_2deg");
+  const std::vector<double> tip = first_cuts(needle, VertexHandle(0));
+  ASSERT_EQ(tip.size(), 2u);
+  EXPECT_NEAR(tip[0], 5.0, 1e-12);
+  EXPECT_NEAR(tip[1], 5.0, 1e-12);
+
+  // The same strip between a boundary wall and an interior segment of a square: the apex (0, 0)
+  // also has the square's wide sector.
+  Domain hub = test::polygon_domain({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, "square_with_strip_hub");
+  hub.points.push_back({9 * std::cos(theta), 9 * std::sin(theta)});
+  hub.segments.push_back({0, 4});
+  const std::vector<double> at_hub = first_cuts(hub, VertexHandle(0));
+  ASSERT_EQ(at_hub.size(), 3u);        // the square's side: its first cut at the spacing
+  EXPECT_NEAR(at_hub[0], 1.0, 1e-12);
+  EXPECT_NEAR(at_hub[1], 3.0, 1e-12);  // the strip's walls: a third of the shorter one (9)
+  EXPECT_NEAR(at_hub[2], 3.0, 1e-12);
+}
+
 TEST(Sampling, uniform_field_gives_a_hexagonal_interior) {
   // Away from the boundary rows, every sample has six neighbours at exactly the spacing: the
   // lattice start is a centroidal Voronoi tessellation there already.
