@@ -536,3 +536,62 @@ TEST(Cdt, cgshop_instances_are_valid_cdts) {
     acute::io::write_mesh(m, out + "/" + name + ".off");
   }
 }
+
+namespace {
+
+/// `m`'s faces added one by one through OpenMesh's add_face, in m's face order from the same corner.
+Mesh rebuilt_by_add_face(const Mesh& m) {
+  Mesh out;
+  for (auto vh : m.vertices()) out.add_vertex(m.point(vh));
+  for (auto fh : m.faces()) {
+    std::vector<acute::VertexHandle> corners;
+    for (auto vh : m.fv_range(fh)) corners.push_back(vh);
+    EXPECT_TRUE(out.add_face(corners).is_valid());
+  }
+  return out;
+}
+
+/// Every handle the two meshes store: vertex, halfedge and face links.
+std::vector<std::string> connectivity_differences(const Mesh& a, const Mesh& b) {
+  std::vector<std::string> out;
+  if (a.n_vertices() != b.n_vertices() || a.n_edges() != b.n_edges() || a.n_faces() != b.n_faces()) return {"element counts differ"};
+  for (auto vh : a.vertices())
+    if (a.halfedge_handle(vh) != b.halfedge_handle(vh)) out.push_back("vertex " + std::to_string(vh.idx()) + ": halfedge");
+  for (auto h : a.halfedges())
+    if (a.next_halfedge_handle(h) != b.next_halfedge_handle(h) || a.prev_halfedge_handle(h) != b.prev_halfedge_handle(h) ||
+        a.face_handle(h) != b.face_handle(h) || a.to_vertex_handle(h) != b.to_vertex_handle(h))
+      out.push_back("halfedge " + std::to_string(h.idx()));
+  for (auto fh : a.faces())
+    if (a.halfedge_handle(fh) != b.halfedge_handle(fh)) out.push_back("face " + std::to_string(fh.idx()));
+  return out;
+}
+
+}  // namespace
+
+// build_cdt links its faces from the triangulation's neighbours instead of add_face's searches:
+// the same mesh, handle for handle (so every later walk and result is as before), with holes,
+// interior segments, a pinched boundary vertex (add_face's own fallback) and the bundled domains.
+TEST(Cdt, the_connectivity_is_what_add_face_builds_from_the_same_faces) {
+  std::vector<Domain> domains;
+  Domain holes = polygon(rect(0, 0, 10, 10), "holes and a dangling segment");
+  add_loop(holes, rect(1, 1, 4, 4));
+  holes.holes.emplace_back(2, 2);
+  const int b = static_cast<int>(holes.points.size());
+  holes.points.emplace_back(1, 6);
+  holes.points.emplace_back(3, 8);
+  holes.segments.push_back({b, b + 1});
+  domains.push_back(holes);
+  // Two squares meeting at one corner, (1, 1): a boundary vertex with two gaps.
+  Domain pinched = polygon(rect(0, 0, 1, 1), "two squares sharing a corner");
+  add_loop(pinched, rect(1, 1, 2, 2));
+  domains.push_back(pinched);
+  for (const auto& f : files_in(fs::path(acute::test::meshes_dir()), ".poly")) domains.push_back(acute::io::read_domain(f.string()));
+  ASSERT_GT(domains.size(), 10u);
+  for (Domain& d : domains) {
+    if (d.points.size() > 100000) continue;  // debug2: the same code path, 60 s of add_face
+    d.convex_hull = d.name == "box";        // meant for Triangle -c (meshes/SOURCES.md)
+    const Mesh m = build_cdt(d);
+    const auto diff = connectivity_differences(m, rebuilt_by_add_face(m));
+    EXPECT_TRUE(diff.empty()) << d.name << ": " << diff.size() << " differences, first " << diff.front();
+  }
+}

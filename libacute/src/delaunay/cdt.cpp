@@ -38,6 +38,63 @@ void check_point(const std::string& where, const char* what, std::size_t i, cons
                        point_text(p));
 }
 
+/// Faces of `mesh` (whose vertices are added) from triangulation slots, each given as its corners
+/// (mesh vertex ids, counter-clockwise) and its slot, in that order, with the connectivity
+/// OpenMesh's add_face would give for the same sequence: edges created in order of first use, a
+/// face's halfedge its third, an interior vertex's halfedge its outgoing one in the last face
+/// round it, a boundary vertex's its outgoing boundary one. The neighbour across each edge comes
+/// from the triangulation instead of a search round the vertices (add_face's find_halfedge and
+/// boundary checks were 0.23 s of the 1M-triangle square). False, with faces added, where a
+/// boundary vertex has two boundary gaps (a pinch: add_face links those in an order of its own),
+/// and the caller builds again with add_face.
+bool add_faces_from_slots(Mesh& mesh, const detail::Triangulation& tr, const std::vector<std::pair<std::array<int, 3>, int>>& order,
+                          const std::vector<int>& vmap) {
+  std::vector<int> face_of_slot(static_cast<std::size_t>(tr.num_slots()), -1);
+  for (const auto& [corners, t] : order) {
+    const auto& tv = tr.tri(t).v;
+    int r = 0;
+    while (vmap[static_cast<std::size_t>(tv[r])] != corners[0]) ++r;
+    HalfedgeHandle he[3];
+    for (int i = 0; i < 3; ++i) {
+      const VertexHandle a(corners[i]), b(corners[(i + 1) % 3]);
+      // The edge corners[i] -> corners[i+1] is opposite triangulation vertex (r + i + 2) % 3.
+      const int nb = tr.tri(t).n[(r + i + 2) % 3];
+      const int other = nb >= 0 ? face_of_slot[static_cast<std::size_t>(nb)] : -1;
+      if (other < 0) {
+        he[i] = mesh.new_edge(a, b);
+        continue;
+      }
+      HalfedgeHandle h = mesh.halfedge_handle(FaceHandle(other));
+      while (mesh.from_vertex_handle(h) != b) h = mesh.next_halfedge_handle(h);
+      he[i] = mesh.opposite_halfedge_handle(h);
+    }
+    const FaceHandle fh = mesh.new_face();
+    mesh.set_halfedge_handle(fh, he[2]);
+    for (int i = 0; i < 3; ++i) {
+      mesh.set_face_handle(he[i], fh);
+      mesh.set_next_halfedge_handle(he[i], he[(i + 1) % 3]);
+      mesh.set_halfedge_handle(VertexHandle(corners[i]), he[i]);
+    }
+    face_of_slot[static_cast<std::size_t>(t)] = fh.idx();
+  }
+  // Boundary halfedges: each one's next leaves its end vertex along the boundary (turn round that
+  // vertex through its faces to the gap), and is its start vertex's halfedge.
+  std::vector<char> gaps(mesh.n_vertices(), 0);
+  for (auto eh : mesh.edges())
+    for (int k = 0; k < 2; ++k) {
+      const HalfedgeHandle h = mesh.halfedge_handle(eh, k);
+      if (mesh.face_handle(h).is_valid()) continue;
+      HalfedgeHandle out = mesh.opposite_halfedge_handle(h);
+      do out = mesh.opposite_halfedge_handle(mesh.next_halfedge_handle(mesh.next_halfedge_handle(out)));
+      while (mesh.face_handle(out).is_valid());
+      mesh.set_next_halfedge_handle(h, out);
+      const VertexHandle from = mesh.from_vertex_handle(h);
+      if (++gaps[static_cast<std::size_t>(from.idx())] > 1) return false;
+      mesh.set_halfedge_handle(from, h);
+    }
+  return true;
+}
+
 }  // namespace
 
 Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_out) {
@@ -207,13 +264,25 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
     for (std::size_t v = 0; v < used; ++v)
       std::sort(order.begin() + start[v], order.begin() + start[v + 1]);
   }
+  if (!add_faces_from_slots(mesh, tr, order, vmap)) {
+    // A pinched boundary vertex: the same faces through add_face.
+    Mesh again;
+    again.reserve(used, used + nf + 1, nf);
+    for (auto vh : mesh.vertices()) again.data(again.add_vertex(mesh.point(vh))) = mesh.data(vh);
+    for (const auto& entry : order) {
+      const auto& c = entry.first;
+      if (!again.add_face(VertexHandle(c[0]), VertexHandle(c[1]), VertexHandle(c[2])).is_valid())
+        throw InternalError("build_cdt: OpenMesh refused triangle " + std::to_string(entry.second));
+    }
+    mesh = std::move(again);
+  }
   std::vector<char> present(domain.segments.size(), 0);
-  for (const auto& [corners, t] : order) {
+  for (std::size_t f = 0; f < order.size(); ++f) {
+    const int t = order[f].second;
     const auto& tv = tr.tri(t).v;
     const VertexHandle vh[3] = {VertexHandle(vmap[static_cast<std::size_t>(tv[0])]), VertexHandle(vmap[static_cast<std::size_t>(tv[1])]),
                                 VertexHandle(vmap[static_cast<std::size_t>(tv[2])])};
-    const FaceHandle fh = mesh.add_face(VertexHandle(corners[0]), VertexHandle(corners[1]), VertexHandle(corners[2]));
-    if (!fh.is_valid()) throw InternalError("build_cdt: OpenMesh refused triangle " + std::to_string(t));
+    const FaceHandle fh(static_cast<int>(f));
     if (tr.segment(t, 0) < 0 && tr.segment(t, 1) < 0 && tr.segment(t, 2) < 0) continue;
     for (auto heh : mesh.fh_range(fh)) {
       const VertexHandle from = mesh.from_vertex_handle(heh);
