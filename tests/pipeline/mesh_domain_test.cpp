@@ -87,6 +87,15 @@ TEST(MeshDomain, a_segment_vertex_with_two_right_triangles_on_a_side_meets_the_b
   expect_cgshop_instance_meets_the_bounds("simple-polygon-exterior_100_37aaf06f.instance.json");  // about 5 s
 }
 
+// The end of a strip one triangle wide between two 90-degree input corners (a CG:SHOP ortho
+// instance at ~200 vertices, whose features alone ask for 3,700 at a coarsened size): one corner
+// keeps one right triangle, and mending it takes a second row of triangles at the strip's end,
+// points finer than the local spacing. The stuck cluster's re-sampling went down to 0.65 of that
+// spacing, still one row: after two restarts, 90.000 degrees. It now also tries half.
+TEST(MeshDomain, the_end_of_a_strip_one_triangle_wide_between_right_angles_meets_the_bounds) {
+  expect_cgshop_instance_meets_the_bounds("ortho_150_53eb4022.instance.json", 200);  // about 6 s
+}
+
 // A stalled repair restarts from another seed's start (MeshOptions::restarts). At ~500 vertices the
 // 32.7-degree sector's instance stalled for 150 iterations at 90.001 degrees with the first seed,
 // the kicks and the sector re-fan notwithstanding; the restart meets the bounds (about 19 s in all).

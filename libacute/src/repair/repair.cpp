@@ -752,11 +752,13 @@ class Repairer {
     joint_first = false;
 
     // A cluster that has resisted every single operation: the region re-sampled from scratch at
-    // the local spacing and somewhat finer (fresh random darts each time).
+    // the local spacing and finer, down to half of it (fresh random darts each time). Half: the
+    // end of a strip one triangle wide between two right-angled input corners needs a second row
+    // there (a CG:SHOP ortho instance at a coarsened size kept one right triangle at 0.65).
     if (remesh) {
       const double h = detail::movable_edge_median(sub0);
       joint_first = true;
-      for (double scale : {1.0, 0.8, 0.65})
+      for (double scale : {1.0, 0.8, 0.65, 0.5})
         attempt(kRemesh, [&, scale, h](Mesh& sub) { return detail::remesh_region(sub, scale * h, ++remesh_seed_); });
       joint_first = false;
     }
