@@ -18,8 +18,8 @@ namespace acute::detail {
 /// Replaces the start mesh's disk around every strip hub (an input vertex with a sector narrower
 /// than options.min_angle_deg and one that is not) by an acute mesh made in
 /// log-polar coordinates and mapped back. Returns the hubs patched; a hub whose patch cannot be
-/// made or inserted is left as it was. `seconds` (> 0) bounds the log-polar meshing: no patch is started after it (one
-/// under way finishes its attempt, so the patches do not depend on the clock).
+/// made or inserted is left as it was. `seconds` (> 0) bounds the log-polar meshing: no patch is
+/// started after it (one under way finishes its attempt, so the patches do not depend on the clock).
 std::vector<Point2> patch_strip_hubs(Mesh& mesh, const MeshOptions& options, double seconds);
 
 }  // namespace acute::detail

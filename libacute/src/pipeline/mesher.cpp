@@ -126,11 +126,12 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
   // few triangles that no edit improves) that another seed's start avoids. A run that stalls
   // with a few bad triangles is restarted from another seed, within what is left of the time
   // limit; the best result is kept.
-  const bool satisfiable = unsatisfiable_note(domain, options).empty();
   for (int k = 1; k <= options.restarts; ++k) {
-    if (options.method != Method::Acute || best.status != MeshStatus::BoundsNotMet || !stalled || options.max_iterations > 0 || !satisfiable ||
+    if (options.method != Method::Acute || best.status != MeshStatus::BoundsNotMet || !stalled || options.max_iterations > 0 ||
         best.remaining.size() > kRestartAtMost)
       break;
+    // (Asked only here: it measures every input corner again, which most runs need not.)
+    if (k == 1 && !unsatisfiable_note(domain, options).empty()) break;
     MeshOptions again = options;
     again.seed = options.seed + static_cast<unsigned>(k) * kRestartSeedStep;
     if (options.time_limit_s > 0) {
