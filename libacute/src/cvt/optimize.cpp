@@ -1,5 +1,7 @@
 #include <acute/cvt/cvt.h>
 
+#include "cvt/in_place.h"
+
 #include <acute/core/errors.h>
 #include <acute/delaunay/cdt.h>
 #include <acute/mesh/segments.h>
@@ -392,6 +394,11 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
 
 CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   CvtResult out;
+  detail::cvt_mesh_into(out.mesh, out, domain, params);
+  return out;
+}
+
+void detail::cvt_mesh_into(Mesh& mesh, CvtResult& out, const Domain& domain, const CvtParams& params) {
   const auto start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const Mesh cdt = build_cdt(domain);
@@ -421,26 +428,26 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
   }
   if (size_field_abandoned || (params.time_limit_s > 0 && elapsed() > params.time_limit_s)) {
     out.out_of_time = out.abandoned = true;
-    return out;
+    return;
   }
   SamplingParams samp;
   samp.seed = params.seed;
   samp.interior = params.interior;
-  out.mesh = sample_domain(domain, cdt, out.size_field, samp, &out.sampling);
+  sample_domain_into(mesh, domain, cdt, out.size_field, samp, &out.sampling);
   // The count model is not exact (and --size has none): coarsen and resample while over budget.
   // Samples scale as 1 / h^2 away from the input points, which stay.
-  for (int k = 0; k < 2 && params.max_vertices > 0 && out.mesh.n_vertices() > params.max_vertices; ++k) {
+  for (int k = 0; k < 2 && params.max_vertices > 0 && mesh.n_vertices() > params.max_vertices; ++k) {
     if (params.time_limit_s > 0 && elapsed() > params.time_limit_s) break;
     const double inputs = static_cast<double>(domain.points.size());
-    const double extra = static_cast<double>(out.mesh.n_vertices()) - inputs;
+    const double extra = static_cast<double>(mesh.n_vertices()) - inputs;
     const double room = static_cast<double>(params.max_vertices) - inputs;
     if (room <= 0) break;
     out.size_field.scale(1.05 * std::sqrt(extra / room));
     out.sampling = {};
-    out.mesh = sample_domain(domain, cdt, out.size_field, samp, &out.sampling);
+    sample_domain_into(mesh, domain, cdt, out.size_field, samp, &out.sampling);
   }
-  out.over_budget = params.max_vertices > 0 && out.mesh.n_vertices() > params.max_vertices;
-  if (params.on_sampled) params.on_sampled(out.mesh.n_vertices(), out.features_decide);
+  out.over_budget = params.max_vertices > 0 && mesh.n_vertices() > params.max_vertices;
+  if (params.on_sampled) params.on_sampled(mesh.n_vertices(), out.features_decide);
   CvtOptimizeParams op;
   op.lloyd_iterations = params.lloyd_iterations;
   op.lbfgs_iterations = params.lloyd_only_where_features_decide && out.features_decide ? 0 : params.lbfgs_iterations;
@@ -455,12 +462,11 @@ CvtResult cvt_mesh(const Domain& domain, const CvtParams& params) {
     op.time_limit_s = std::max(left, 1e-9);
   }
   op.observer = params.observer;
-  out.optimization = cvt_optimize(out.mesh, out.size_field, op);
+  out.optimization = cvt_optimize(mesh, out.size_field, op);
   out.iterations = out.optimization.lloyd_iterations + out.optimization.lbfgs_iterations;
   out.energy = out.optimization.energy;
   out.gradient_norm = out.optimization.gradient_norm;
   if (params.time_limit_s > 0 && !out.optimization.converged && elapsed() > params.time_limit_s) out.out_of_time = true;
-  return out;
 }
 
 }  // namespace acute

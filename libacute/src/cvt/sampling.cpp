@@ -1,5 +1,7 @@
 #include <acute/cvt/sampling.h>
 
+#include "cvt/in_place.h"
+#include "delaunay/in_place.h"
 #include "cvt/lattice.h"
 #include "cvt/narrow_sectors.h"
 
@@ -129,7 +131,7 @@ Mesh with_coherent_faces(const Mesh& in) {
 bool build_keeping_everything(const Domain& bd, Mesh& out) {
   try {
     CdtStats cs;
-    out = build_cdt(bd, {}, &cs);
+    detail::build_cdt_into(out, bd, {}, &cs);
     std::size_t constrained = 0;
     for (auto eh : out.edges()) constrained += is_constrained(out, eh) ? 1 : 0;
     return out.n_vertices() == bd.points.size() && constrained == bd.segments.size() && cs.points_on_segments == 0 &&
@@ -264,6 +266,14 @@ bool build_at_once(const Mesh& cdt, const std::vector<Point2>& holes, const std:
 }  // namespace
 
 Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field, const SamplingParams& params, SamplingStats* stats_out) {
+  Mesh mesh;
+  detail::sample_domain_into(mesh, domain, cdt, field, params, stats_out);
+  return mesh;
+}
+
+void detail::sample_domain_into(Mesh& mesh, const Domain& domain, const Mesh& cdt, const SizeField& field, const SamplingParams& params,
+                                SamplingStats* stats_out) {
+  if (mesh.n_vertices() > 0) mesh = Mesh();
   SamplingStats stats;
   SegmentTable table = domain_segment_table(domain);
   // Segment id of every edge of the input CDT (hull edges of -c domains get new ids).
@@ -424,7 +434,6 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
   }
   for (const Piece& piece : pieces) stats.boundary_samples += piece.cuts.size();
 
-  Mesh mesh;
   if (build_at_once(cdt, domain.holes, pieces, interior, seg_marker, mesh)) {
     stats.interior_samples = interior.size();
   } else {
@@ -462,7 +471,6 @@ Mesh sample_domain(const Domain& domain, const Mesh& cdt, const SizeField& field
   }
   set_segment_table(mesh, std::move(table));
   if (stats_out) *stats_out = stats;
-  return mesh;
 }
 
 }  // namespace acute

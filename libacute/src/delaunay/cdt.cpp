@@ -3,6 +3,7 @@
 #include <acute/core/errors.h>
 #include <acute/predicates/predicates.h>
 
+#include "delaunay/in_place.h"
 #include "delaunay/triangulation.h"
 
 #include <algorithm>
@@ -98,6 +99,12 @@ bool add_faces_from_slots(Mesh& mesh, const detail::Triangulation& tr, const std
 }  // namespace
 
 Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_out) {
+  Mesh mesh;
+  detail::build_cdt_into(mesh, domain, options, stats_out);
+  return mesh;
+}
+
+void detail::build_cdt_into(Mesh& mesh, const Domain& domain, const CdtOptions& options, CdtStats* stats_out) {
   const std::string where = domain.name.empty() ? std::string("domain") : domain.name;
   CdtStats stats;
   const std::size_t n = domain.points.size();
@@ -218,7 +225,7 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
     for (int v : tr.tri(t).v) vmap[static_cast<std::size_t>(v)] = 0;
   }
   if (nf == 0) throw InvalidInput(where + ": domain encloses no area");
-  Mesh mesh;
+  if (mesh.n_vertices() > 0) mesh = Mesh();
   std::size_t used = 0;
   for (int v : vmap) used += v == 0 ? 1 : 0;
   mesh.reserve(used, used + nf + 1, nf);
@@ -306,7 +313,6 @@ Mesh build_cdt(const Domain& domain, const CdtOptions& options, CdtStats* stats_
   if (dropped_segments > 5)
     stats.warnings.push_back(std::to_string(dropped_segments) + " segments in all have no domain on either side, dropped");
   if (stats_out) *stats_out = std::move(stats);
-  return mesh;
 }
 
 std::vector<std::array<int, 3>> delaunay_triangles(const std::vector<Point2>& points) {

@@ -8,6 +8,7 @@
 #include <acute/refine/refine.h>
 #include <acute/repair/repair.h>
 
+#include "cvt/in_place.h"
 #include "pipeline/hub_patch.h"
 
 #include <algorithm>
@@ -219,8 +220,12 @@ MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, 
         if (options.time_limit_s > 0) rp.time_limit_s = std::max(seconds, 1e-9);
         if (refine(result.mesh, rp).status == RefineStatus::OutOfTime) result.notes.push_back("the refinement start stopped at its share of the time limit");
       };
+      // The CVT builds its start in result.mesh (no copy: see cvt/in_place.h); the fallbacks
+      // refine the domain's CDT, built again.
+      auto domain_cdt_again = [&] { result.mesh = build_domain_cdt(domain, options.cdt); };
       try {
-        CvtResult cvt = cvt_mesh(domain, cp);
+        CvtResult cvt;
+        detail::cvt_mesh_into(result.mesh, cvt, domain, cp);
         if (cvt.out_of_time && !cvt.abandoned) result.notes.push_back("the CVT start stopped at its share of the time limit");
         if (cvt.abandoned || cvt.over_budget) {
           // A domain whose size field alone outlasts the time share, or whose CVT start needs more
@@ -229,18 +234,19 @@ MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, 
           if (cvt.abandoned)
             result.notes.push_back("the CVT start ran out of its share of the time limit in its size field; using a Delaunay refinement start");
           else
-            result.notes.push_back("the CVT start needs " + std::to_string(cvt.mesh.n_vertices()) + " vertices, over the budget of " +
+            result.notes.push_back("the CVT start needs " + std::to_string(result.mesh.n_vertices()) + " vertices, over the budget of " +
                                    std::to_string(options.max_vertices) + "; using a Delaunay refinement start within it");
+          domain_cdt_again();
           // When the CVT's half is gone: up to 70% of the limit (at least 15% of it), the rest for the repair.
           refine_start(cvt.abandoned ? std::max(0.7 * options.time_limit_s - seconds_since(start), 0.15 * options.time_limit_s)
                                      : 0.5 * options.time_limit_s - seconds_since(start));
         } else {
-          result.mesh = std::move(cvt.mesh);
           result.iterations = cvt.iterations;
         }
       } catch (const InvalidInput& e) {
         // The domain itself is fine (its CDT was built above): fall back to a refinement start.
         result.notes.push_back(std::string("CVT start failed (") + e.what() + "); using a Delaunay refinement start");
+        domain_cdt_again();
         // As the CVT start: at most half the time limit, the repair has the rest.
         refine_start(0.5 * options.time_limit_s - seconds_since(start));
       }
