@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -301,7 +302,7 @@ class Repairer {
         std::fprintf(stderr, "it %d cluster at (%.6g, %.6g): %zu bad, region %zu faces, base infeasible %zu bad %zu worst %.4f\n", it, p[0].x(),
                      p[0].y(), c.bad.size(), region.big_faces.size(), base.infeasible, base.bad, base.worst);
       }
-      Mesh best;
+      std::shared_ptr<const Mesh> best;
       Score best_score = base;
       kicked_ = false;
       search(region, stuck_ > 1, best, best_score);
@@ -311,18 +312,18 @@ class Repairer {
       if (best_score < base || kicked_) {
         if (paranoid_) {
           auto area = [](const Mesh& m) { double a = 0; for (auto fh : m.faces()) { const auto p = face_points(m, fh); a += signed_area2(p[0], p[1], p[2]); } return a; };
-          const double a0 = area(region.sub), a1 = area(best);
+          const double a0 = area(region.sub), a1 = area(*best);
           if (std::abs(a0 - a1) > 1e-9 * std::abs(a0))
             throw InternalError("repair: candidate " + std::to_string(best_candidate_) + " changed the region area " + std::to_string(a0) + " -> " + std::to_string(a1));
         }
-        detail::commit_region(mesh_, region, best);
+        detail::commit_region(mesh_, region, *best);
         if (paranoid_) {
           double total = 0;
           for (auto fh : mesh_.faces()) { const auto p = face_points(mesh_, fh); total += signed_area2(p[0], p[1], p[2]); }
           if (paranoid_area_ == 0) paranoid_area_ = total;
           if (std::abs(total - paranoid_area_) > 1e-9 * paranoid_area_)
             throw InternalError("repair: a cluster edit changed the mesh area (candidate " + std::to_string(best_candidate_) + ")");
-          const std::string sub_problem = detail::constraint_violation(best);
+          const std::string sub_problem = detail::constraint_violation(*best);
           const std::string problem = detail::constraint_violation(mesh_);
           if (!problem.empty()) throw InternalError("repair: after a cluster edit: " + problem + " (region copy: " + sub_problem + ")");
         }
@@ -434,7 +435,7 @@ class Repairer {
 
   /// Best of the candidate operations; when `deep`, also every candidate applied to the four best
   /// results of the first level (two-step edits for clusters no single operation improves).
-  void search(const detail::Region& region, bool deep, Mesh& best, Score& best_score) {
+  void search(const detail::Region& region, bool deep, std::shared_ptr<const Mesh>& best, Score& best_score) {
     best_candidate_ = 0;  // (0: no candidate beat the region as it was)
     best_kind_ = -1;
     std::vector<Outcome> level1;
@@ -444,9 +445,9 @@ class Repairer {
     for (std::size_t i = 0; i < std::min<std::size_t>(3, level1.size()); ++i) {
       Outcome& o = level1[i];
       if ((o.score.bad == 0 && o.score.infeasible == 0) || out_of_time()) break;
-      Mesh relaxed = o.mesh;
-      relax_sub(relaxed, region.forced);
-      const Score r = score(relaxed, region.forced);
+      auto relaxed = std::make_shared<Mesh>(*o.mesh);
+      relax_sub(*relaxed, region.forced);
+      const Score r = score(*relaxed, region.forced);
       if (r < o.score) o.mesh = std::move(relaxed), o.score = r;
     }
     for (auto& o : level1)
@@ -470,15 +471,17 @@ class Repairer {
     for (const auto& first : level1) {
       if (out_of_time()) break;
       std::vector<Outcome> level2;
-      expand(first.mesh, region.forced, level2, /*remesh=*/false);
+      expand(*first.mesh, region.forced, level2, /*remesh=*/false);
       for (auto& o : level2)
         if (o.score < best_score) best_score = o.score, best = std::move(o.mesh), best_candidate_ = 100 * first.candidate + o.candidate, best_kind_ = first.kind;
     }
   }
 
+  /// A candidate's result. The mesh is held by pointer: OpenMesh meshes have no move, so sorting
+  /// or growing a vector of them copied every region mesh several times.
   struct Outcome {
     Score score;
-    Mesh mesh;
+    std::shared_ptr<const Mesh> mesh;
     int candidate = 0;
     int kind = 0;
   };
@@ -499,7 +502,8 @@ class Repairer {
       ++candidate_;
       if (solved) return;
       if (!out.empty() && out_of_time()) return;  // one cluster's search must not outlast the time limit
-      Mesh sub = sub0;
+      auto owned = std::make_shared<Mesh>(sub0);
+      Mesh& sub = *owned;
       if (!operation(sub)) return;  // (no garbage collection: sub vertex indices map to the big mesh)
       if (paranoid_) {
         auto boundary_edges = [](const Mesh& m) { std::size_t n = 0; for (auto eh : m.edges()) n += m.is_boundary(eh) && !is_constrained(m, eh); return n; };
@@ -512,7 +516,7 @@ class Repairer {
       const Score s = score(sub, forced);
       if (trace_) std::fprintf(stderr, "    candidate %d (kind %d): infeasible %zu bad %zu worst %.4f\n", candidate_, kind, s.infeasible, s.bad, s.worst);
       solved = s.bad == 0 && s.infeasible == 0;
-      out.push_back(Outcome{s, std::move(sub), candidate_, kind});
+      out.push_back(Outcome{s, std::move(owned), candidate_, kind});
     };
     // The topological candidates are queued, then tried in the order of how often each kind has
     // solved a cluster so far (stable: ties keep the order below): the search stops at the first
