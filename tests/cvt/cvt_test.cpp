@@ -1,8 +1,10 @@
 #include "cvt/cvt_domains.h"
+#include "cvt/settled_cells.h"
 #include "support/mesh_verify.h"
 #include "support/paths.h"
 
 #include <acute/cvt/cvt.h>
+#include <acute/cvt/voronoi.h>
 #include <acute/delaunay/cdt.h>
 #include <acute/io/io.h>
 #include <acute/mesh/check.h>
@@ -426,6 +428,76 @@ TEST(Cvt, active_set_optimises_only_what_moves_and_meets_the_same_tolerance) {
     none.lloyd_iterations = none.lbfgs_iterations = 0;
     const auto check = cvt_optimize(part.mesh, part.field, none);
     EXPECT_NEAR(check.initial_energy, rp.energy, 1e-9 * check.initial_energy) << d.name;
+  }
+}
+
+/// The test domains and two bundled ones with a graded field.
+std::vector<Domain> settled_cell_domains() {
+  std::vector<Domain> out{test::unit_square(), test::l_shape(), test::wedge_with_hole()};
+  for (const char* name : {"A.poly", "guitar.poly"}) out.push_back(io::read_domain(std::string(test::meshes_dir()) + "/" + name));
+  return out;
+}
+
+// The cells predicted settled (read off the mesh, no cell integrated) are ones an exact
+// evaluation finds still: the prediction may only under-report what has settled.
+TEST(Cvt, cells_predicted_settled_are_still_when_evaluated) {
+  for (const Domain& d : settled_cell_domains()) {
+    const auto p = prepare(d, 8000);
+    constexpr double kActive = 1e-3;
+    std::vector<double> h;
+    const auto spacing = detail::settled_cells(p.mesh, p.field, kActive, h);
+    CellIntegrals cells;
+    CellWorkspace ws;
+    compute_cells(p.mesh, p.field, cells, ws);
+    std::size_t settled = 0, free_vertices = 0;
+    for (auto vh : p.mesh.vertices()) {
+      const auto i = static_cast<std::size_t>(vh.idx());
+      free_vertices += p.mesh.data(vh).kind == VertexKind::Free;
+      if (spacing[i] == 0) continue;
+      ++settled;
+      ASSERT_GT(cells.mass[i], 0) << d.name;
+      const double move = cells.shift[i].norm() / (cells.mass[i] * h[i]);
+      EXPECT_LE(move, kActive) << d.name << " vertex " << vh.idx();
+      // Its cell is the regular hexagon: the energy is the one predicted for it.
+      EXPECT_NEAR(std::pow(ws.vertex_rho[i], -0.25), h[i], 1e-12 * h[i]) << d.name;
+    }
+    std::cout << "[cvt] " << d.name << ": " << settled << " of " << free_vertices << " free vertices predicted settled\n";
+    EXPECT_GT(settled * 2, free_vertices) << d.name;  // a lattice start: most of the interior
+  }
+}
+
+TEST(Cvt, predicted_settled_cells_give_an_active_set_that_meets_the_tolerance) {
+  for (const Domain& d : settled_cell_domains()) {
+    auto exact = prepare(d, 8000), predicted = prepare(d, 8000);
+    CvtOptimizeParams params;
+    params.move_tolerance = 3e-3;
+    params.active_move = 1e-3;
+    const auto re = cvt_optimize(exact.mesh, exact.field, params);
+    params.predict_settled = true;
+    const Mesh start = predicted.mesh;
+    const auto rp = cvt_optimize(predicted.mesh, predicted.field, params);
+    // The predicted active set is the exact one or a little more (the prediction is cautious).
+    EXPECT_GE(rp.active, re.active) << d.name;
+    EXPECT_LE(rp.active, re.active + re.active / 50) << d.name;
+    EXPECT_LE(rp.active * 2, predicted.mesh.n_vertices()) << d.name;
+    std::size_t moved = 0;
+    for (auto vh : predicted.mesh.vertices()) moved += predicted.mesh.point(vh) != start.point(vh) ? 1 : 0;
+    EXPECT_LE(moved, rp.active) << d.name;
+    EXPECT_TRUE(rp.converged) << d.name;
+    EXPECT_TRUE(check_mesh(predicted.mesh, CheckLevel::Delaunay).ok()) << d.name << ": " << check_mesh(predicted.mesh, CheckLevel::Delaunay).summary();
+    expect_constraints_kept(predicted.mesh, d);
+    // The energy reported holds an estimate for the frozen part (exact for regular hexagons).
+    CvtOptimizeParams none;
+    none.lloyd_iterations = none.lbfgs_iterations = 0;
+    const auto check = cvt_optimize(predicted.mesh, predicted.field, none);
+    EXPECT_NEAR(rp.energy, check.initial_energy, 1e-3 * check.initial_energy) << d.name;
+    EXPECT_LE(check.initial_energy, re.initial_energy) << d.name;
+    std::cout << "[cvt] " << d.name << ": predicted active " << rp.active << " (exact " << re.active << "), energy " << rp.energy
+              << " reported, " << check.initial_energy << " evaluated (exact path " << re.energy << ")\n";
+    // Evaluated whole, the mesh is as centroidal as the exact path's.
+    const auto check_exact = cvt_optimize(exact.mesh, exact.field, none);
+    EXPECT_LE(check.rms_move, 1.01 * check_exact.rms_move) << d.name;
+    EXPECT_LE(check.max_move, 1.01 * check_exact.max_move) << d.name;
   }
 }
 

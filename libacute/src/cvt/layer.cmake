@@ -4,6 +4,7 @@ acute_add_layer(cvt
     src/cvt/lattice.cpp
     src/cvt/narrow_sectors.cpp
     src/cvt/sampling.cpp
+    src/cvt/settled_cells.cpp
     src/cvt/site_delaunay.cpp
     src/cvt/voronoi.cpp
     src/cvt/optimize.cpp

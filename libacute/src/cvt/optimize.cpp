@@ -1,6 +1,7 @@
 #include <acute/cvt/cvt.h>
 
 #include "cvt/in_place.h"
+#include "cvt/settled_cells.h"
 
 #include <acute/core/errors.h>
 #include <acute/delaunay/cdt.h>
@@ -255,11 +256,54 @@ class Optimizer {
 
 CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOptimizeParams& params) {
   CvtOptimizeResult res;
-  std::optional<Optimizer> whole(std::in_place, mesh, field, params);
-  whole->evaluate();
-  res.initial_energy = whole->energy();
-  std::optional<Optimizer> part;
-  if (params.active_move > 0 && params.subset.empty()) {
+  std::optional<Optimizer> whole, part;
+  if (params.active_move > 0 && params.subset.empty() && params.predict_settled) {
+    // Cells known to have settled stand in for a first evaluation of every cell.
+    std::vector<double> h;
+    const std::vector<double> spacing = detail::settled_cells(mesh, field, params.active_move, h);
+    std::vector<VertexHandle> unsettled;
+    std::size_t count = 0;
+    for (auto vh : mesh.vertices()) {
+      if (mesh.status(vh).deleted() || mesh.data(vh).kind == VertexKind::Input || mesh.is_isolated(vh)) continue;
+      ++count;
+      if (spacing[static_cast<std::size_t>(vh.idx())] == 0) unsettled.push_back(vh);
+    }
+    CvtOptimizeParams local = params;
+    std::vector<char> seen;
+    local.subset = with_rings(mesh, std::move(unsettled), 2, seen);
+    if (local.subset.size() * 2 <= count) {
+      // The frozen part of the energy: a settled cell is six kites of equal energy, one in each of
+      // its triangles; those in triangles of the active vertices are in the part's energy.
+      for (VertexHandle vh : local.subset) seen[static_cast<std::size_t>(vh.idx())] = 1;
+      double frozen = 0;
+      for (auto vh : mesh.vertices()) {
+        const auto i = static_cast<std::size_t>(vh.idx());
+        if (spacing[i] == 0 || seen[i]) continue;
+        int kites = 0;
+        for (auto heh : mesh.voh_range(vh))
+          kites += !seen[static_cast<std::size_t>(mesh.to_vertex_handle(heh).idx())] &&
+                   !seen[static_cast<std::size_t>(mesh.to_vertex_handle(mesh.next_halfedge_handle(heh)).idx())];
+        frozen += (kites / 6.0) * detail::settled_cell_energy(spacing[i], h[i]);
+      }
+      if (local.subset.empty()) {  // every cell has settled
+        res.initial_energy = res.energy = frozen;
+        res.converged = true;
+        return res;
+      }
+      res.active = local.subset.size();
+      part.emplace(mesh, field, local);
+      part->count_still_movers(count);
+      part->evaluate();
+      part->set_energy_offset(frozen);
+      res.initial_energy = part->energy();
+    }
+  }
+  if (!part) {
+    whole.emplace(mesh, field, params);
+    whole->evaluate();
+    res.initial_energy = whole->energy();
+  }
+  if (!part && params.active_move > 0 && params.subset.empty()) {
     CvtOptimizeParams local = params;
     std::vector<char> seen;
     local.subset = with_rings(mesh, whole->moving(params.active_move), 2, seen);
@@ -453,6 +497,7 @@ void detail::cvt_mesh_into(Mesh& mesh, CvtResult& out, const Domain& domain, con
   op.lbfgs_iterations = params.lloyd_only_where_features_decide && out.features_decide ? 0 : params.lbfgs_iterations;
   op.move_tolerance = params.move_tolerance;
   op.active_move = params.active_move;
+  op.predict_settled = params.predict_settled;
   if (params.time_limit_s > 0) {
     const double left = params.time_limit_s - elapsed();
     if (left <= 0) {

@@ -200,6 +200,7 @@ MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, 
         cp.lfs_factor = 0.7;  // room for interior vertices in strips between input points
         cp.move_tolerance = 3e-3;
         cp.active_move = 1e-3;  // the lattice away from its boundary rows and seams is centroidal already
+        cp.predict_settled = true;
         cp.lloyd_only_where_features_decide = true;
       }
       if (options.observer)

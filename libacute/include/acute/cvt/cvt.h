@@ -49,6 +49,13 @@ struct CvtOptimizeParams {
   /// most half the movers (a lattice start is centroidal already away from its boundary rows and
   /// level seams). The others keep moves below this; the rms test counts them as still.
   double active_move = 0;
+  /// With active_move: the first evaluation of every cell is skipped; the vertices whose cell is
+  /// known to have settled (a free interior vertex in a regular hexagon of neighbours where the
+  /// size field is too even to move it by active_move / 2) are left out instead of those the
+  /// evaluation finds still (found without integrating a cell: the exact set or a little more on
+  /// every domain tried; that evaluation is most of the optimisation's time on a lattice start). The
+  /// energies reported then hold the frozen cells' energies as those of their hexagons.
+  bool predict_settled = false;
   std::function<void(const CvtProgress&)> observer;
 };
 
@@ -88,6 +95,7 @@ struct CvtParams {
   int lbfgs_iterations = 200;
   double move_tolerance = 1e-3;     ///< rms |v - c_v| / h(v) to stop at
   double active_move = 0;           ///< CvtOptimizeParams::active_move (0: every vertex throughout)
+  bool predict_settled = false;     ///< CvtOptimizeParams::predict_settled
   unsigned seed = 1;
   InteriorSampling interior = InteriorSampling::Lattice;  ///< the seeds of the interior
   /// > 0: the whole CVT start (size field, sampling, optimisation) stops after this many seconds:
