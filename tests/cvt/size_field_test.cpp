@@ -146,7 +146,7 @@ TEST(SizeField, wide_corners_are_the_input_vertices_with_a_sector_of_at_least_80
 
 // A strip 1 long and 1e-3 wide: the local feature size along its walls is its width, so at 10
 // vertices its features alone ask for some thousand, far over kMaxFeatureExcess times the count.
-TEST(SizeField, features_past_the_excess_decide_the_count_at_the_coarsest_factor_unless_it_is_held) {
+TEST(SizeField, features_past_the_excess_decide_the_count_at_the_coarsest_factor_unless_it_is_held_below_them) {
   const Mesh cdt = build_cdt(test::polygon_domain({{0, 0}, {1, 0}, {1, 1e-3}, {0, 1e-3}}, "strip"));
   SizeFieldParams p;
   p.target_vertices = 10;
@@ -170,6 +170,17 @@ TEST(SizeField, features_past_the_excess_decide_the_count_at_the_coarsest_factor
   p.max_vertices = 0;
   p.hold_count = true;
   EXPECT_LE(predicted_vertex_count(cdt, make_size_field(cdt, p, nullptr, &decide)), 1.1 * kMaxFeatureExcess * 10) << "held near the request";
+  EXPECT_FALSE(decide);
+  // A hold that the features' own count fits under leaves the field as it was (a run whose time
+  // limit can mesh them at their density).
+  p.held_count_at_least = 2 * predicted_vertex_count(cdt, free);
+  const SizeField roomy = make_size_field(cdt, p, nullptr, &decide);
+  EXPECT_TRUE(decide);
+  EXPECT_EQ(predicted_vertex_count(cdt, roomy), predicted_vertex_count(cdt, free));
+  for (double x : {0.1, 0.5, 0.9}) EXPECT_EQ(roomy({x, 5e-4}), free({x, 5e-4})) << x;
+  // One it does not fit under holds the count there.
+  p.held_count_at_least = 0.5 * predicted_vertex_count(cdt, free);
+  EXPECT_LE(predicted_vertex_count(cdt, make_size_field(cdt, p, nullptr, &decide)), 1.1 * p.held_count_at_least) << "held at the floor";
   EXPECT_FALSE(decide);
 }
 

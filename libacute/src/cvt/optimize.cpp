@@ -455,6 +455,7 @@ void detail::cvt_mesh_into(Mesh& mesh, CvtResult& out, const Domain& domain, con
   sp.hmax = params.hmax;
   sp.max_vertices = params.max_vertices;
   sp.hold_count = params.hold_count;
+  sp.held_count_at_least = params.held_count_at_least;
   if (params.time_limit_s > 0) {
     sp.time_limit_s = std::max(0.25 * params.time_limit_s - elapsed(), 1e-9);
     sp.abandon_after_s = std::max(params.time_limit_s - elapsed(), 1e-9);

@@ -496,6 +496,8 @@ class GradedFields {
     }
   }
 
+  void set_wide_factor(double wide_factor) { wide_factor_ = wide_factor; }
+
   SizeField make(double lfs_factor, double hmin, double hmax) {
     // Fine enough that the size can grow between the features (values in between are linear).
     const double step = std::clamp(hmax, dm_.diameter / 200.0, dm_.diameter / 50.0);
@@ -650,8 +652,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
     if (!add_grading_points(samples, params.gradation, hn, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||
         past_abandon_time(params, start))
       return given_up(hn, abandoned);
-    // A held count coarsens wide corners too (they would keep it far over the cap: debug2's 10,000).
-    GradedFields fields(samples, dm, params.gradation, params.hold_count ? INFINITY : params.lfs_factor);
+    GradedFields fields(samples, dm, params.gradation, params.lfs_factor);
     auto field_at = [&](double hmax) { return fields.make(params.lfs_factor, hmin, hmax); };
     const double top = std::max(hn, dm.diameter);
     if (past_abandon_time(params, start)) return given_up(hn, abandoned);
@@ -664,11 +665,12 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
       // that is over kMaxFeatureExcess * N; then coarsen the lfs-bound sizes by a common factor
       // lambda (count ~ 1 / lambda^2 there: a few secant steps), up to kCoarsestLfsFactor unless
       // the count is held.
-      const double budget = params.max_vertices > 0 ? static_cast<double>(params.max_vertices) : INFINITY;
+      double budget = params.max_vertices > 0 ? static_cast<double>(params.max_vertices) : INFINITY;
       double cap = std::min(kMaxFeatureExcess * target, budget);
       if (at_top <= cap) return ft;
       const double coarsest = std::max(params.lfs_factor, kCoarsestLfsFactor);
-      bool stop_at_coarsest = !params.hold_count;  // once: past it the budget is the only cap
+      bool stop_at_coarsest = true;  // once: past it the budget is the only cap
+      const double held = params.hold_count ? std::max(kMaxFeatureExcess * target, params.held_count_at_least) : INFINITY;
       // Secant steps on log(count) against log(lambda): the exponent starts at the area's 2 and is
       // then measured (the boundary's 1 / lambda share and the hmin clamp make it smaller; debug2
       // at 2k vertices has 0.9, where assuming 2 left it 25% over after five steps).
@@ -685,9 +687,17 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
           lambda = coarsest;
           ft = fields.make(lambda, hmin, top);
           count = predicted_vertex_count(input_cdt, ft);
-          if (count <= budget) {
+          if (count <= std::min(budget, held)) {
             if (features_decide) *features_decide = true;
             return ft;
+          }
+          if (held < budget) {
+            // A held count coarsens wide corners too (they would keep it far over the cap: debug2's
+            // 10,000).
+            budget = held;
+            fields.set_wide_factor(INFINITY);
+            ft = fields.make(lambda, hmin, top);
+            count = predicted_vertex_count(input_cdt, ft);
           }
           cap = budget;
           continue;

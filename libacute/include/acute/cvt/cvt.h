@@ -106,6 +106,7 @@ struct CvtParams {
   /// samples exceed it; only the input points alone can exceed it, then CvtResult::over_budget)
   std::size_t max_vertices = 0;
   bool hold_count = false;  ///< SizeFieldParams::hold_count
+  double held_count_at_least = 0;  ///< SizeFieldParams::held_count_at_least
   /// No L-BFGS steps when the features decide the vertex count (make_size_field's
   /// features_decide): such a mesh is mostly strips a row or two wide, whose Voronoi cells are all
   /// clipped by the walls, and the steps cost more than they give a repair that follows (debug2 at

@@ -90,11 +90,14 @@ struct SizeFieldParams {
   /// With target_vertices, when the features alone (the lfs-bound field) ask for more than
   /// kMaxFeatureExcess times the count, their sizes are coarsened by a common factor: false (the
   /// default) stops at kCoarsestLfsFactor times the local feature size, and the features decide
-  /// the count (a strip still takes a row of acute triangles across); true goes on until the
-  /// field predicts kMaxFeatureExcess times the count (near the request, but thin strips are then
-  /// too coarse for the angle bounds: for a run under a time limit, which could not mesh them at
-  /// their density anyway)
+  /// the count (a strip still takes a row of acute triangles across); true goes on, when the count
+  /// there is over max(kMaxFeatureExcess times the count, held_count_at_least), until the field
+  /// predicts that many (near the request, but thin strips are then too coarse for the angle
+  /// bounds: for a run under a time limit, which could not mesh them at their density anyway)
   bool hold_count = false;
+  /// With hold_count: the count is held to no fewer vertices than this (what a run's time limit
+  /// can mesh at the features' density).
+  double held_count_at_least = 0;
   /// > 0: the count calibration stops after this many seconds with a field predicting at most the
   /// count (the coarsening of an over-fine feature-bound field always runs: it bounds the samples)
   double time_limit_s = 0;
