@@ -159,7 +159,7 @@ void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code
   cmd->add_option("--min-angle", args->options.min_angle_deg, "Smallest allowed angle (degrees)")->capture_default_str();
   cmd->add_option("--max-angle", args->options.max_angle_deg, "Angles must be strictly below this (degrees)")->capture_default_str();
   auto* size = cmd->add_option("--size", args->options.size, "Target edge length");
-  cmd->add_option("--vertices", args->options.target_vertices, "Target vertex count (small features that need more get more; under --time-limit at most 16 times it)")->excludes(size);
+  cmd->add_option("--vertices", args->options.target_vertices, "Target vertex count (small features that need more get more; under --time-limit T at most the larger of 16 times it and 1,000 T)")->excludes(size);
   cmd->add_option("--gradation", args->options.gradation, "Size gradation factor")->capture_default_str();
   cmd->add_option("--max-size", args->options.max_size, "Largest edge length of the graded size field (default: a fraction of the domain's diameter)")
       ->excludes(size);

@@ -236,7 +236,7 @@ void add_repair_command(CLI::App& app, const GlobalOptions& global, int& exit_co
   cmd->add_option("--start", args->start, "--keep-vertices start: auto | cdt | refine | cvt")->capture_default_str();
   cmd->add_option("--method", args->method, "Remesh method: cdt | refine | cvt | acute")->capture_default_str();
   auto* size = cmd->add_option("--size", args->options.size, "Target edge length (default: graded by the features, at most the input's mean spacing)");
-  cmd->add_option("--vertices", args->options.target_vertices, "Target vertex count (small features that need more get more; under --time-limit at most 16 times it)")->excludes(size);
+  cmd->add_option("--vertices", args->options.target_vertices, "Target vertex count (small features that need more get more; under --time-limit T at most the larger of 16 times it and 1,000 T)")->excludes(size);
   cmd->add_option("--seed", args->options.seed, "Random seed (deterministic output)")->capture_default_str();
   cmd->add_option("--max-iterations", args->options.max_iterations, "Repair iteration cap (0: default)");
   cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();
