@@ -174,14 +174,17 @@ TEST(SizeField, features_past_the_excess_decide_the_count_at_the_coarsest_factor
   // A hold that the features' own count fits under leaves the field as it was (a run whose time
   // limit can mesh them at their density).
   p.held_count_at_least = 2 * predicted_vertex_count(cdt, free);
-  const SizeField roomy = make_size_field(cdt, p, nullptr, &decide);
+  bool held = true;
+  const SizeField roomy = make_size_field(cdt, p, nullptr, &decide, &held);
   EXPECT_TRUE(decide);
+  EXPECT_FALSE(held);
   EXPECT_EQ(predicted_vertex_count(cdt, roomy), predicted_vertex_count(cdt, free));
   for (double x : {0.1, 0.5, 0.9}) EXPECT_EQ(roomy({x, 5e-4}), free({x, 5e-4})) << x;
   // One it does not fit under holds the count there.
   p.held_count_at_least = 0.5 * predicted_vertex_count(cdt, free);
-  EXPECT_LE(predicted_vertex_count(cdt, make_size_field(cdt, p, nullptr, &decide)), 1.1 * p.held_count_at_least) << "held at the floor";
+  EXPECT_LE(predicted_vertex_count(cdt, make_size_field(cdt, p, nullptr, &decide, &held)), 1.1 * p.held_count_at_least) << "held at the floor";
   EXPECT_FALSE(decide);
+  EXPECT_TRUE(held);
 }
 
 TEST(SizeField, a_field_given_up_at_its_abandon_time_says_so) {

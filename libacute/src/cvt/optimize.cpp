@@ -461,7 +461,7 @@ void detail::cvt_mesh_into(Mesh& mesh, CvtResult& out, const Domain& domain, con
     sp.abandon_after_s = std::max(params.time_limit_s - elapsed(), 1e-9);
   }
   bool size_field_abandoned = false;
-  out.size_field = make_size_field(cdt, sp, &size_field_abandoned, &out.features_decide);
+  out.size_field = make_size_field(cdt, sp, &size_field_abandoned, &out.features_decide, &out.count_held);
   if (params.size_cap && !out.size_field.is_uniform()) {
     std::vector<double> values = out.size_field.background_values();
     const auto& points = out.size_field.background_points();

@@ -630,9 +630,10 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
   return GradedFields(samples, dm, params.gradation, params.lfs_factor).make(params.lfs_factor, hmin, hmax);
 }
 
-SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned, bool* features_decide) {
+SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned, bool* features_decide, bool* held_back) {
   if (abandoned) *abandoned = false;
   if (features_decide) *features_decide = false;
+  if (held_back) *held_back = false;
   if (params.size < 0 || !std::isfinite(params.size)) throw InvalidInput("size field: --size must be positive");
   if (params.size > 0) return SizeField::uniform(params.size);
   if (params.target_vertices > 0) {
@@ -695,6 +696,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
             // A held count coarsens wide corners too (they would keep it far over the cap: debug2's
             // 10,000).
             budget = held;
+            if (held_back) *held_back = true;
             fields.set_wide_factor(INFINITY);
             ft = fields.make(lambda, hmin, top);
             count = predicted_vertex_count(input_cdt, ft);

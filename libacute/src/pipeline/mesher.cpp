@@ -236,6 +236,9 @@ MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, 
         CvtResult cvt;
         detail::cvt_mesh_into(result.mesh, cvt, domain, cp);
         if (cvt.out_of_time && !cvt.abandoned) result.notes.push_back("the CVT start stopped at its share of the time limit");
+        if (cvt.count_held)
+          result.notes.push_back("the domain's small features need more vertices than the time limit allows at their density: held at about " +
+                                 std::to_string(result.mesh.n_vertices()) + ", where thin parts seldom meet the bounds (a longer --time-limit keeps them)");
         if (cvt.abandoned || cvt.over_budget) {
           // A domain whose size field alone outlasts the time share, or whose CVT start needs more
           // vertices than allowed: its CDT, refined within what is left of the share and the budget,

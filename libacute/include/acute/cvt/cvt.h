@@ -130,6 +130,7 @@ struct CvtResult {
   bool over_budget = false;   ///< more vertices than max_vertices even at the coarsest field tried
   bool out_of_time = false;   ///< the time limit ended the start before the optimisation did
   bool features_decide = false;  ///< the size field stopped at kCoarsestLfsFactor * lfs (make_size_field)
+  bool count_held = false;       ///< hold_count coarsened the field past that (make_size_field's held)
   /// The time limit ran out before there were samples to optimise (a huge domain: its size field
   /// alone outlasts the limit): mesh is empty, the caller keeps a mesh it has (the domain's CDT)
   bool abandoned = false;

@@ -164,8 +164,9 @@ SizeField local_feature_size_field(const Mesh& input_cdt, const SizeFieldParams&
 /// *abandoned (when given) says whether params.abandon_after_s gave the field up: then a uniform
 /// field comes back and the caller gives its start up too (also when the abandon time is only
 /// predicted to pass: a grading round that would outlast it is not started).
-/// *features_decide (when given) says whether the field stopped at kCoarsestLfsFactor * lfs.
+/// *features_decide (when given) says whether the field stopped at kCoarsestLfsFactor * lfs;
+/// *held (when given) whether hold_count coarsened it past that.
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned = nullptr,
-                          bool* features_decide = nullptr);
+                          bool* features_decide = nullptr, bool* held = nullptr);
 
 }  // namespace acute
