@@ -191,8 +191,10 @@ class Repairer {
                   return detail::build_polar_fan(sub, apex, corner.radius, detail::kPolarFanRings, bounds_.max_deg * kPi / 180);
                 }) || changed;
     }
+    // (The loop's sweeps skip deleted elements: a collection, 0.1 s per million triangles, waits
+    // until enough are deleted.)
     if (changed) {
-      collect_garbage(mesh_);
+      collect_garbage_when_worth_it();
       refresh_forced();
     }
   }
@@ -213,7 +215,7 @@ class Repairer {
                 changed;
     }
     if (changed) {
-      collect_garbage(mesh_);
+      collect_garbage_when_worth_it();
       refresh_forced();
     }
   }
