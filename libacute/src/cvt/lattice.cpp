@@ -76,8 +76,9 @@ NestedLattice::NestedLattice(const SizeField& field, const Point2& lo, const Poi
 void NestedLattice::sort_unique_keys() {
   // Every lattice point comes once per leaf triangle around it (up to six times): sorted and
   // deduplicated in lexicographic order. Where the keys span less than 2^32 in each coordinate
-  // (always but for absurd gradings), many keys go as packed 64-bit words through a radix sort,
-  // 16 bits a pass, skipping the passes whose digit never varies: several times faster than std::sort.
+  // (always but for absurd gradings) they are packed in 64-bit words, in the same order; many keys
+  // then go through a radix sort, 16 bits a pass, skipping the passes whose digit never varies:
+  // several times faster than std::sort.
   if (keys_.empty()) return;
   Key lo = keys_.front(), hi = lo;
   for (const Key& k : keys_)
@@ -86,7 +87,7 @@ void NestedLattice::sort_unique_keys() {
   // Each radix pass clears and sums 2^16 counters: worth it for large triangles only (a domain's
   // CDT has thousands of small ones, each with a handful of keys).
   constexpr std::size_t kRadixFrom = std::size_t{1} << 15;
-  if (keys_.size() < kRadixFrom || hi[0] - lo[0] >= kSpan || hi[1] - lo[1] >= kSpan) {
+  if (hi[0] - lo[0] >= kSpan || hi[1] - lo[1] >= kSpan) {
     std::sort(keys_.begin(), keys_.end());
     keys_.erase(std::unique(keys_.begin(), keys_.end()), keys_.end());
     return;
@@ -94,6 +95,18 @@ void NestedLattice::sort_unique_keys() {
   packed_.resize(keys_.size());
   for (std::size_t i = 0; i < keys_.size(); ++i)
     packed_[i] = (static_cast<std::uint64_t>(keys_[i][0] - lo[0]) << 32) | static_cast<std::uint64_t>(keys_[i][1] - lo[1]);
+  if (keys_.size() < kRadixFrom) {
+    std::sort(packed_.begin(), packed_.end());  // one word a key: cheaper to compare than two
+  } else {
+    radix_sort_packed();
+  }
+  packed_.erase(std::unique(packed_.begin(), packed_.end()), packed_.end());
+  keys_.resize(packed_.size());
+  for (std::size_t i = 0; i < packed_.size(); ++i)
+    keys_[i] = {lo[0] + static_cast<std::int64_t>(packed_[i] >> 32), lo[1] + static_cast<std::int64_t>(packed_[i] & 0xFFFFFFFFu)};
+}
+
+void NestedLattice::radix_sort_packed() {
   std::uint64_t varying = 0;
   for (std::uint64_t w : packed_) varying |= w ^ packed_.front();
   scratch_.resize(packed_.size());
@@ -111,10 +124,6 @@ void NestedLattice::sort_unique_keys() {
     for (std::uint64_t w : packed_) scratch_[counts_[(w >> shift) & 0xFFFF]++] = w;
     packed_.swap(scratch_);
   }
-  packed_.erase(std::unique(packed_.begin(), packed_.end()), packed_.end());
-  keys_.resize(packed_.size());
-  for (std::size_t i = 0; i < packed_.size(); ++i)
-    keys_[i] = {lo[0] + static_cast<std::int64_t>(packed_[i] >> 32), lo[1] + static_cast<std::int64_t>(packed_[i] & 0xFFFFFFFFu)};
 }
 
 Point2 NestedLattice::at(const Key& k) const {

@@ -36,6 +36,7 @@ class NestedLattice {
   };
   Point2 at(const Key& k) const;
   void sort_unique_keys();
+  void radix_sort_packed();  ///< packed_ in increasing order, 16 bits a pass
 
   const SizeField& field_;
   Point2 origin_;
