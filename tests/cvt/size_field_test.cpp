@@ -187,6 +187,30 @@ TEST(SizeField, features_past_the_excess_decide_the_count_at_the_coarsest_factor
   EXPECT_TRUE(held);
 }
 
+// A size with the graded flag is the largest edge length: uniform where nothing needs finer (the
+// exact lattice), the local feature size's graded field below it where the features do.
+TEST(SizeField, a_graded_size_is_uniform_unless_the_features_need_finer) {
+  SizeFieldParams p;
+  p.size = 0.01;
+  p.graded = true;
+  p.lfs_factor = 0.7;
+  const SizeField square = make_size_field(build_cdt(test::unit_square()), p);
+  EXPECT_TRUE(square.is_uniform());
+  EXPECT_EQ(square.max_value(), 0.01);
+  const Mesh strip = build_cdt(test::polygon_domain({{0, 0}, {1, 0}, {1, 1e-3}, {0, 1e-3}}, "strip"));
+  p.size = 0.1;
+  bool decide = true;
+  const SizeField f = make_size_field(strip, p, nullptr, &decide);
+  EXPECT_FALSE(f.is_uniform());
+  // The strip's width asks for a thousand vertices, the uniform size's count for a handful: past
+  // the excess, the features decide at the coarsest factor.
+  EXPECT_TRUE(decide);
+  for (double x : {0.1, 0.5, 0.9}) EXPECT_LE(f({x, 5e-4}), kCoarsestLfsFactor * 1e-3 * 1.05) << x << ": the strip's width";
+  EXPECT_LE(f.max_value(), 0.1);
+  p.graded = false;
+  EXPECT_TRUE(make_size_field(strip, p).is_uniform()) << "without the flag, uniform as asked";
+}
+
 TEST(SizeField, a_field_given_up_at_its_abandon_time_says_so) {
   // The CVT start gives itself up on this flag, not on its own clock: a grading round predicted to
   // outlast the share used to return a uniform field early, and the CVT then ran on it (debug2

@@ -635,7 +635,23 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
   if (features_decide) *features_decide = false;
   if (held_back) *held_back = false;
   if (params.size < 0 || !std::isfinite(params.size)) throw InvalidInput("size field: --size must be positive");
-  if (params.size > 0) return SizeField::uniform(params.size);
+  if (params.size > 0) {
+    if (!params.graded) return SizeField::uniform(params.size);
+    // The size is the largest; where the features need finer, the graded field of the local
+    // feature size (with the count path's excess rule against the uniform size's count).
+    SizeFieldParams g = params;
+    g.hmax = params.hmax > 0 ? std::min(params.hmax, params.size) : params.size;
+    SizeField f = local_feature_size_field(input_cdt, g, abandoned);
+    if (abandoned && *abandoned) return f;
+    if (!(f.min_value() < params.size)) return SizeField::uniform(params.size);  // nothing finer: the exact lattice
+    const double uniform_count = predicted_vertex_count(input_cdt, SizeField::uniform(params.size));
+    if (g.lfs_factor < kCoarsestLfsFactor && predicted_vertex_count(input_cdt, f) > kMaxFeatureExcess * uniform_count) {
+      g.lfs_factor = kCoarsestLfsFactor;
+      f = local_feature_size_field(input_cdt, g, abandoned);
+      if (features_decide && !(abandoned && *abandoned)) *features_decide = true;
+    }
+    return f;
+  }
   if (params.target_vertices > 0) {
     const DomainMeasures dm = measure_domain(input_cdt);
     const double hn = size_for_vertex_count(dm, params.target_vertices);

@@ -189,7 +189,8 @@ MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, 
       CvtParams cp;
       cp.size = options.size;
       cp.target_vertices = options.target_vertices;
-      cp.graded = options.size <= 0;
+      // The acute repair needs the features resolved: with --size too, finer where they need it.
+      cp.graded = options.size <= 0 || options.method == Method::Acute || options.cvt_as_repair_start;
       cp.gradation = options.gradation;
       cp.hmax = options.max_size;
       cp.size_cap = options.size_cap;

@@ -84,7 +84,7 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
 struct CvtParams {
   double size = 0;                 ///< --size H (uniform)
   std::size_t target_vertices = 0; ///< --vertices N (uniform, calibrated)
-  bool graded = false;             ///< with target_vertices: graded field scaled to N instead of uniform
+  bool graded = false;             ///< SizeFieldParams::graded (with target_vertices or size)
   double gradation = 1.3;          ///< graded default field
   double lfs_factor = 1.0;
   double hmax = 0;                 ///< 0: diameter / 25

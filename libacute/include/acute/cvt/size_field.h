@@ -77,9 +77,11 @@ constexpr double kCoarsestLfsFactor = 1.0;
 constexpr double kDefaultMaxSizeRatio = 1.0 / 25.0;
 
 struct SizeFieldParams {
-  double size = 0;                ///< > 0: uniform field of this edge length
+  double size = 0;                ///< > 0: field of this edge length (uniform, or at most it: graded)
   std::size_t target_vertices = 0;  ///< > 0 (and size == 0): field giving about this many vertices
-  bool graded = false;            ///< with target_vertices: the graded field scaled to the count (else uniform)
+  /// With target_vertices: the graded field scaled to the count (else uniform); with size: size
+  /// where the features allow it, the graded field of the local feature size where they need finer
+  bool graded = false;
   double gradation = 1.3;         ///< graded field: |grad h| <= gradation - 1
   double lfs_factor = 1.0;        ///< graded field: h = lfs_factor * local feature size at input points
   double hmin = 0;                ///< graded field clamp; 0: kMinSizeRatio * diameter
@@ -153,7 +155,10 @@ LfsSamples local_feature_size_samples(const Mesh& input_cdt, double spacing_cap)
 /// field at hmax comes back then).
 SizeField local_feature_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned = nullptr);
 
-/// Chooses the field from params: uniform(size); for target_vertices uniform, or (graded) the graded
+/// Chooses the field from params: for size, uniform(size), or (graded) the field of
+/// local_feature_size_field capped at size (uniform when nothing needs finer; past
+/// kMaxFeatureExcess times the uniform size's count at kCoarsestLfsFactor * lfs, the features then
+/// deciding); for target_vertices uniform, or (graded) the graded
 /// field with hmax >= the uniform size h_N for N vertices, hmax chosen so the predicted count is
 /// within 2% of N. The field never exceeds lfs_factor * lfs: when the features alone need more
 /// than N vertices, the count exceeds the target (hmax then the diameter), up to
