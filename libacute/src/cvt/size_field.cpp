@@ -17,6 +17,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <queue>
 #include <tuple>
 
@@ -614,20 +615,35 @@ SizeField given_up(double h, bool* abandoned) {
   return SizeField::uniform(h);
 }
 
+/// The graded fields of the input's local feature size up to hmax (local_feature_size_field's
+/// samples and grading points, once for several factors); none when params.abandon_after_s passed.
+std::optional<GradedFields> lfs_fields(const Mesh& cdt, const SizeFieldParams& params, const DomainMeasures& dm, double hmax) {
+  const auto start = std::chrono::steady_clock::now();
+  LfsSamples samples = local_feature_size_samples(cdt, hmax);
+  if (past_abandon_time(params, start)) return std::nullopt;
+  if (!add_grading_points(samples, params.gradation, hmax, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||
+      past_abandon_time(params, start))
+    return std::nullopt;
+  return std::optional<GradedFields>(std::in_place, samples, dm, params.gradation, params.lfs_factor);
+}
+
+double graded_hmax(const SizeFieldParams& params, const DomainMeasures& dm) {
+  return params.hmax > 0 ? params.hmax : kDefaultMaxSizeRatio * dm.diameter;
+}
+
+double graded_hmin(const SizeFieldParams& params, const DomainMeasures& dm, double hmax) {
+  return params.hmin > 0 ? std::min(params.hmin, hmax) : std::min(kMinSizeRatio * dm.diameter, hmax);
+}
+
 }  // namespace
 
 SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& params, bool* abandoned) {
-  const auto start = std::chrono::steady_clock::now();
   const DomainMeasures dm = measure_domain(cdt);
   if (!(dm.diameter > 0)) throw InvalidInput("size field: the domain has no extent");
-  const double hmax = params.hmax > 0 ? params.hmax : kDefaultMaxSizeRatio * dm.diameter;
-  const double hmin = params.hmin > 0 ? std::min(params.hmin, hmax) : std::min(kMinSizeRatio * dm.diameter, hmax);
-  LfsSamples samples = local_feature_size_samples(cdt, hmax);
-  if (past_abandon_time(params, start)) return given_up(hmax, abandoned);
-  if (!add_grading_points(samples, params.gradation, hmax, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||
-      past_abandon_time(params, start))
-    return given_up(hmax, abandoned);
-  return GradedFields(samples, dm, params.gradation, params.lfs_factor).make(params.lfs_factor, hmin, hmax);
+  const double hmax = graded_hmax(params, dm);
+  auto fields = lfs_fields(cdt, params, dm, hmax);
+  if (!fields) return given_up(hmax, abandoned);
+  return fields->make(params.lfs_factor, graded_hmin(params, dm, hmax), hmax);
 }
 
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned, bool* features_decide, bool* held_back) {
@@ -639,16 +655,18 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
     if (!params.graded) return SizeField::uniform(params.size);
     // The size is the largest; where the features need finer, the graded field of the local
     // feature size (with the count path's excess rule against the uniform size's count).
-    SizeFieldParams g = params;
-    g.hmax = params.hmax > 0 ? std::min(params.hmax, params.size) : params.size;
-    SizeField f = local_feature_size_field(input_cdt, g, abandoned);
-    if (abandoned && *abandoned) return f;
+    const DomainMeasures dm = measure_domain(input_cdt);
+    if (!(dm.diameter > 0)) throw InvalidInput("size field: the domain has no extent");
+    const double hmax = params.hmax > 0 ? std::min(params.hmax, params.size) : params.size;
+    auto fields = lfs_fields(input_cdt, params, dm, hmax);
+    if (!fields) return given_up(hmax, abandoned);
+    const double hmin = graded_hmin(params, dm, hmax);
+    SizeField f = fields->make(params.lfs_factor, hmin, hmax);
     if (!(f.min_value() < params.size)) return SizeField::uniform(params.size);  // nothing finer: the exact lattice
     const double uniform_count = predicted_vertex_count(input_cdt, SizeField::uniform(params.size));
-    if (g.lfs_factor < kCoarsestLfsFactor && predicted_vertex_count(input_cdt, f) > kMaxFeatureExcess * uniform_count) {
-      g.lfs_factor = kCoarsestLfsFactor;
-      f = local_feature_size_field(input_cdt, g, abandoned);
-      if (features_decide && !(abandoned && *abandoned)) *features_decide = true;
+    if (params.lfs_factor < kCoarsestLfsFactor && predicted_vertex_count(input_cdt, f) > kMaxFeatureExcess * uniform_count) {
+      f = fields->make(kCoarsestLfsFactor, hmin, hmax);  // wide corners keep the factor asked for, as with a count
+      if (features_decide) *features_decide = true;
     }
     return f;
   }
@@ -663,7 +681,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
       return params.time_limit_s > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > params.time_limit_s;
     };
     const double target = static_cast<double>(params.max_vertices > 0 ? std::min(params.target_vertices, params.max_vertices) : params.target_vertices);
-    const double hmin = params.hmin > 0 ? std::min(params.hmin, hn) : std::min(kMinSizeRatio * dm.diameter, hn);
+    const double hmin = graded_hmin(params, dm, hn);
     LfsSamples samples = local_feature_size_samples(input_cdt, hn);
     if (past_abandon_time(params, start)) return given_up(hn, abandoned);
     if (!add_grading_points(samples, params.gradation, hn, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||

@@ -82,7 +82,7 @@ struct CvtOptimizeResult {
 CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOptimizeParams& params = {});
 
 struct CvtParams {
-  double size = 0;                 ///< --size H (uniform)
+  double size = 0;                 ///< --size H (uniform, or the largest with graded)
   std::size_t target_vertices = 0; ///< --vertices N (uniform, calibrated)
   bool graded = false;             ///< SizeFieldParams::graded (with target_vertices or size)
   double gradation = 1.3;          ///< graded default field
