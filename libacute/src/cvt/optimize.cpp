@@ -20,6 +20,11 @@
 namespace acute {
 namespace {
 
+/// A vertex the optimiser moves: not deleted, not an input vertex, in a face.
+bool is_mover(const Mesh& mesh, VertexHandle vh) {
+  return !mesh.status(vh).deleted() && mesh.data(vh).kind != VertexKind::Input && !mesh.is_isolated(vh);
+}
+
 /// The moving vertices, their coordinates (2 per free vertex, the arc length along the segment
 /// for a vertex on a segment), the cells, and the move/flip machinery.
 class Optimizer {
@@ -27,9 +32,8 @@ class Optimizer {
   Optimizer(Mesh& mesh, const SizeField& field, const CvtOptimizeParams& params) : mesh_(mesh), field_(field) {
     std::vector<char> taken(mesh.n_vertices(), 0);
     auto add = [&](VertexHandle vh) {
-      if (!vh.is_valid() || mesh.status(vh).deleted() || taken[static_cast<std::size_t>(vh.idx())]) return;
+      if (!vh.is_valid() || !is_mover(mesh, vh) || taken[static_cast<std::size_t>(vh.idx())]) return;
       const auto& d = mesh.data(vh);
-      if (d.kind == VertexKind::Input || mesh.is_isolated(vh)) return;
       taken[static_cast<std::size_t>(vh.idx())] = 1;
       Mover m;
       m.vh = vh;
@@ -257,6 +261,13 @@ class Optimizer {
 CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOptimizeParams& params) {
   CvtOptimizeResult res;
   std::optional<Optimizer> whole, part;
+  // The active set's optimiser: its rms counts the `count` movers of the mesh, the others still.
+  auto start_part = [&](const CvtOptimizeParams& local, std::size_t count) {
+    res.active = local.subset.size();
+    part.emplace(mesh, field, local);
+    part->count_still_movers(count);
+    part->evaluate();
+  };
   if (params.active_move > 0 && params.subset.empty() && params.predict_settled) {
     // Cells known to have settled stand in for a first evaluation of every cell.
     std::vector<double> h;
@@ -264,7 +275,7 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
     std::vector<VertexHandle> unsettled;
     std::size_t count = 0;
     for (auto vh : mesh.vertices()) {
-      if (mesh.status(vh).deleted() || mesh.data(vh).kind == VertexKind::Input || mesh.is_isolated(vh)) continue;
+      if (!is_mover(mesh, vh)) continue;
       ++count;
       if (spacing[static_cast<std::size_t>(vh.idx())] == 0) unsettled.push_back(vh);
     }
@@ -290,10 +301,7 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
         res.converged = true;
         return res;
       }
-      res.active = local.subset.size();
-      part.emplace(mesh, field, local);
-      part->count_still_movers(count);
-      part->evaluate();
+      start_part(local, count);
       part->set_energy_offset(frozen);
       res.initial_energy = part->energy();
     }
@@ -308,13 +316,10 @@ CvtOptimizeResult cvt_optimize(Mesh& mesh, const SizeField& field, const CvtOpti
     std::vector<char> seen;
     local.subset = with_rings(mesh, whole->moving(params.active_move), 2, seen);
     if (!local.subset.empty() && local.subset.size() * 2 <= whole->num_movers()) {
-      res.active = local.subset.size();
       const std::size_t count = whole->num_movers();
       const double total = whole->energy();
       whole.reset();
-      part.emplace(mesh, field, local);
-      part->count_still_movers(count);
-      part->evaluate();
+      start_part(local, count);
       part->set_energy_offset(total - part->energy());
     }
   }
