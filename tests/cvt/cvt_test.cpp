@@ -399,6 +399,26 @@ TEST(Cvt, a_size_cap_makes_its_region_finer_and_leaves_the_rest) {
   EXPECT_GT(capped.mesh.n_vertices(), 2 * plain.mesh.n_vertices());
 }
 
+/// Vertices of `now` away from where they were in `start`.
+std::size_t moved_vertices(const Mesh& now, const Mesh& start) {
+  std::size_t moved = 0;
+  for (auto vh : now.vertices()) moved += now.point(vh) != start.point(vh) ? 1 : 0;
+  return moved;
+}
+
+/// Every cell of the mesh evaluated, nothing moved (initial_energy, max_move, rms_move).
+CvtOptimizeResult evaluated_whole(Mesh& mesh, const SizeField& field) {
+  CvtOptimizeParams none;
+  none.lloyd_iterations = none.lbfgs_iterations = 0;
+  return cvt_optimize(mesh, field, none);
+}
+
+/// An optimised mesh is constrained Delaunay and keeps its constraints.
+void expect_valid_optimised(const Mesh& mesh, const Domain& d) {
+  EXPECT_TRUE(check_mesh(mesh, CheckLevel::Delaunay).ok()) << d.name << ": " << check_mesh(mesh, CheckLevel::Delaunay).summary();
+  expect_constraints_kept(mesh, d);
+}
+
 TEST(Cvt, active_set_optimises_only_what_moves_and_meets_the_same_tolerance) {
   for (const Domain& d : {test::unit_square(), test::l_shape(), test::wedge_with_hole()}) {
     auto whole = prepare(d, 8000), part = prepare(d, 8000);
@@ -411,9 +431,7 @@ TEST(Cvt, active_set_optimises_only_what_moves_and_meets_the_same_tolerance) {
     // Away from the boundary rows the lattice is centroidal: few vertices are optimised ...
     EXPECT_GT(rp.active, 0u) << d.name;
     EXPECT_LT(rp.active * 4, part.mesh.n_vertices()) << d.name;
-    std::size_t moved = 0;
-    for (auto vh : part.mesh.vertices()) moved += part.mesh.point(vh) != start.point(vh) ? 1 : 0;
-    EXPECT_LE(moved, rp.active) << d.name;
+    EXPECT_LE(moved_vertices(part.mesh, start), rp.active) << d.name;
     // ... and the result meets the same tolerance, counting the frozen cells.
     EXPECT_TRUE(rp.converged) << d.name;
     EXPECT_LE(rp.energy, rw.initial_energy) << d.name;
@@ -421,12 +439,9 @@ TEST(Cvt, active_set_optimises_only_what_moves_and_meets_the_same_tolerance) {
               << rp.energy << " (whole mesh: " << rw.energy << ")\n";
     // Both stop at the rms tolerance; the whole-mesh run goes on a little further (84-99% here).
     EXPECT_GE(rw.initial_energy - rp.energy, 0.75 * (rw.initial_energy - rw.energy)) << d.name;
-    EXPECT_TRUE(check_mesh(part.mesh, CheckLevel::Delaunay).ok()) << d.name << ": " << check_mesh(part.mesh, CheckLevel::Delaunay).summary();
-    expect_constraints_kept(part.mesh, d);
+    expect_valid_optimised(part.mesh, d);
     // The energy of the final mesh, evaluated over every cell, is the one reported.
-    CvtOptimizeParams none;
-    none.lloyd_iterations = none.lbfgs_iterations = 0;
-    const auto check = cvt_optimize(part.mesh, part.field, none);
+    const auto check = evaluated_whole(part.mesh, part.field);
     EXPECT_NEAR(check.initial_energy, rp.energy, 1e-9 * check.initial_energy) << d.name;
   }
 }
@@ -480,22 +495,17 @@ TEST(Cvt, predicted_settled_cells_give_an_active_set_that_meets_the_tolerance) {
     EXPECT_GE(rp.active, re.active) << d.name;
     EXPECT_LE(rp.active, re.active + re.active / 50) << d.name;
     EXPECT_LE(rp.active * 2, predicted.mesh.n_vertices()) << d.name;
-    std::size_t moved = 0;
-    for (auto vh : predicted.mesh.vertices()) moved += predicted.mesh.point(vh) != start.point(vh) ? 1 : 0;
-    EXPECT_LE(moved, rp.active) << d.name;
+    EXPECT_LE(moved_vertices(predicted.mesh, start), rp.active) << d.name;
     EXPECT_TRUE(rp.converged) << d.name;
-    EXPECT_TRUE(check_mesh(predicted.mesh, CheckLevel::Delaunay).ok()) << d.name << ": " << check_mesh(predicted.mesh, CheckLevel::Delaunay).summary();
-    expect_constraints_kept(predicted.mesh, d);
+    expect_valid_optimised(predicted.mesh, d);
     // The energy reported holds an estimate for the frozen part (exact for regular hexagons).
-    CvtOptimizeParams none;
-    none.lloyd_iterations = none.lbfgs_iterations = 0;
-    const auto check = cvt_optimize(predicted.mesh, predicted.field, none);
+    const auto check = evaluated_whole(predicted.mesh, predicted.field);
     EXPECT_NEAR(rp.energy, check.initial_energy, 1e-3 * check.initial_energy) << d.name;
     EXPECT_LE(check.initial_energy, re.initial_energy) << d.name;
     std::cout << "[cvt] " << d.name << ": predicted active " << rp.active << " (exact " << re.active << "), energy " << rp.energy
               << " reported, " << check.initial_energy << " evaluated (exact path " << re.energy << ")\n";
     // Evaluated whole, the mesh is as centroidal as the exact path's.
-    const auto check_exact = cvt_optimize(exact.mesh, exact.field, none);
+    const auto check_exact = evaluated_whole(exact.mesh, exact.field);
     EXPECT_LE(check.rms_move, 1.01 * check_exact.rms_move) << d.name;
     EXPECT_LE(check.max_move, 1.01 * check_exact.max_move) << d.name;
   }
