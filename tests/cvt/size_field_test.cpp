@@ -211,6 +211,29 @@ TEST(SizeField, a_graded_size_is_uniform_unless_the_features_need_finer) {
   EXPECT_TRUE(make_size_field(strip, p).is_uniform()) << "without the flag, uniform as asked";
 }
 
+TEST(SizeField, the_default_field_coarsens_features_past_the_excess_of_its_largest_size) {
+  // Neither a size nor a count: the graded field under the default largest size (a 25th of the
+  // diameter). Its feature-bound sizes keep the factor asked for while the features ask for at
+  // most kMaxFeatureExcess times a uniform largest size's vertices, and stop at the coarsest factor
+  // past that (debug2's needles: 3.1M vertices at 0.7, 1.9M at 1.0), as with --size.
+  SizeFieldParams p;
+  p.graded = true;
+  p.lfs_factor = 0.7;
+  const Mesh notch = build_cdt(test::polygon_domain({{0, 0}, {1, 0}, {1, 1}, {0.52, 1}, {0.5, 0.9}, {0.48, 1}, {0, 1}}, "notch"));
+  bool decide = true;
+  const SizeField mild = make_size_field(notch, p, nullptr, &decide);
+  EXPECT_FALSE(decide) << "a notch a tenth deep asks for a few times the count, not 16";
+  EXPECT_DOUBLE_EQ(mild.min_value(), local_feature_size_field(notch, p).min_value());
+  const Mesh strip = build_cdt(test::polygon_domain({{0, 0}, {1, 0}, {1, 1e-3}, {0, 1e-3}}, "strip"));
+  const SizeField f = make_size_field(strip, p, nullptr, &decide);
+  EXPECT_TRUE(decide) << "the strip's width asks for a thousand vertices, a 25th of its diameter for a handful";
+  for (double x : {0.1, 0.5, 0.9}) {
+    EXPECT_LE(f({x, 5e-4}), kCoarsestLfsFactor * 1e-3 * 1.05) << x << ": the strip's width";
+    EXPECT_GE(f({x, 5e-4}), 0.9 * 1e-3) << x << ": coarsened from 0.7 of it";
+  }
+  EXPECT_GT(predicted_vertex_count(strip, local_feature_size_field(strip, p)), 1.5 * predicted_vertex_count(strip, f));
+}
+
 TEST(SizeField, a_field_given_up_at_its_abandon_time_says_so) {
   // The CVT start gives itself up on this flag, not on its own clock: a grading round predicted to
   // outlast the share used to return a uniform field early, and the CVT then ran on it (debug2
