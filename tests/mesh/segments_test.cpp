@@ -81,8 +81,40 @@ TEST(StrictlyBetweenAlong, ignores_the_coordinate_a_segment_is_constant_in) {
   const std::array<Point2, 2> horizontal{Point2(0, 1), Point2(4, 1)};
   EXPECT_TRUE(strictly_between_along(horizontal, Point2(1, 1), Point2(2, 1), Point2(3, 1)));
   EXPECT_FALSE(strictly_between_along(horizontal, Point2(1, 1), Point2(3, 1), Point2(3, 1)));
-  const std::array<Point2, 2> slanted{Point2(0, 0), Point2(4, 1)};
-  EXPECT_FALSE(strictly_between_along(slanted, Point2(1, 0.25), Point2(2, 0.25), Point2(3, 0.25)));
+  // A steep segment: both coordinates advance strictly (x for a referee's walk, y as the dominant one).
+  const std::array<Point2, 2> steep{Point2(0, 0), Point2(1, 4)};
+  EXPECT_FALSE(strictly_between_along(steep, Point2(0.25, 1), Point2(0.25, 2), Point2(0.5, 3)));
+  EXPECT_FALSE(strictly_between_along(steep, Point2(0.25, 1), Point2(0.5, 2), Point2(0.5, 3)));
+  EXPECT_TRUE(strictly_between_along(steep, Point2(0.25, 1), Point2(0.375, 2), Point2(0.5, 3)));
+}
+
+TEST(StrictlyBetweenAlong, lets_a_nearly_level_chain_repeat_its_minor_coordinate_but_never_x) {
+  // 2e-15 out of level over a third (stress seed 32's wall): about 18 doubles of y between its
+  // ends, so a chain strict in y could carry no more Steiner points than that.
+  const std::array<Point2, 2> wall{Point2(1.000001, 0.5), Point2(1.3333333333333335, 0.499999999999998)};
+  const Point2 lo(1.1, 0.5), hi(1.2, 0.5);
+  EXPECT_TRUE(strictly_between_along(wall, lo, Point2(1.15, 0.5), hi));
+  EXPECT_FALSE(strictly_between_along(wall, lo, Point2(1.2, 0.5), hi));                   // x must advance
+  EXPECT_FALSE(strictly_between_along(wall, lo, Point2(1.15, 0.49999999999999994), hi));  // y stays between
+  // So a thousand Steiner points fit, each on the line to within kMaxSegmentDeviation.
+  Point2 prev = wall[0];
+  int fitted = 0;
+  for (int i = 1; i < 1000; ++i) {
+    const Point2 q = wall[0] + (i / 1000.0) * (wall[1] - wall[0]);
+    const Point2 p = project_on_line(wall, q, &prev, &wall[1]);
+    if (!strictly_between_along(wall, prev, p, wall[1])) continue;
+    EXPECT_LE(line_deviation(wall, p), kMaxSegmentDeviation);
+    prev = p;
+    ++fitted;
+  }
+  EXPECT_EQ(fitted, 999);
+}
+
+TEST(InChainOrder, equals_the_neighbours_where_they_agree) {
+  EXPECT_TRUE(in_chain_order(Point2(2, 0), Point2(1, 1), Point2(2, 1), Point2(3, 1)));
+  EXPECT_FALSE(in_chain_order(Point2(2, 0), Point2(1, 1), Point2(2, 1.0000000000000002), Point2(3, 1)));
+  EXPECT_FALSE(in_chain_order(Point2(0, 2), Point2(1, 1), Point2(1, 1), Point2(1, 3)));  // y must advance on a vertical
+  EXPECT_TRUE(in_chain_order(Point2(2, 1e-15), Point2(1, 1), Point2(2, 1), Point2(3, 1)));
 }
 
 }  // namespace

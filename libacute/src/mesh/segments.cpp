@@ -39,6 +39,7 @@ OpenMesh::MPropHandleT<SharedTable> table_handle(const Mesh& mesh) {
 }
 
 bool strictly_between(double v, double lo, double hi) { return lo < hi ? (lo < v && v < hi) : (hi < v && v < lo); }
+bool weakly_between(double v, double lo, double hi) { return lo <= hi ? (lo <= v && v <= hi) : (hi <= v && v <= lo); }
 
 bool in_bracket(const std::array<Point2, 2>& ends, const Point2& p, const Point2* lo, const Point2* hi) {
   return lo == nullptr || hi == nullptr || strictly_between_along(ends, *lo, p, *hi);
@@ -206,9 +207,28 @@ Point2 project_on_line(const std::array<Point2, 2>& ends, const Point2& p, const
   return snap_to_line(ends, q, lo, hi);
 }
 
+bool advances_strictly(const Point2& direction, int axis) {
+  if (direction[axis] == 0) return false;
+  return axis == 0 || std::fabs(direction.y()) >= std::fabs(direction.x());
+}
+
+bool in_chain_order(const Point2& direction, const Point2& lo, const Point2& p, const Point2& hi) {
+  for (int i = 0; i < 2; ++i) {
+    if (lo[i] == hi[i]) {
+      if (p[i] != lo[i]) return false;
+    } else if (!(advances_strictly(direction, i) ? strictly_between(p[i], lo[i], hi[i]) : weakly_between(p[i], lo[i], hi[i]))) {
+      return false;
+    }
+  }
+  return true;
+}
+
 bool strictly_between_along(const std::array<Point2, 2>& ends, const Point2& lo, const Point2& p, const Point2& hi) {
-  for (int i = 0; i < 2; ++i)
-    if (ends[0][i] != ends[1][i] && !strictly_between(p[i], lo[i], hi[i])) return false;
+  const Point2 d = ends[1] - ends[0];
+  for (int i = 0; i < 2; ++i) {
+    if (d[i] == 0) continue;
+    if (!(advances_strictly(d, i) ? strictly_between(p[i], lo[i], hi[i]) : weakly_between(p[i], lo[i], hi[i]))) return false;
+  }
   return true;
 }
 

@@ -14,14 +14,10 @@ bool keeps_segment_order(const Mesh& mesh, VertexHandle vh, const Point2& p) {
   for (auto heh : mesh.voh_range(vh))
     if (mesh.data(mesh.edge_handle(heh)).segment == seg && n < 2) w[n++] = point2(mesh, mesh.to_vertex_handle(heh));
   if (n < 2) return false;
-  // Strictly between the neighbours in each coordinate in which they differ, equal where they
-  // agree (splits keep the chain strictly monotone in every coordinate the segment varies in, so
-  // the neighbours differ exactly there): exact comparisons, no tolerance.
-  for (int i = 0; i < 2; ++i) {
-    const double lo = std::min(w[0][i], w[1][i]), hi = std::max(w[0][i], w[1][i]);
-    if (lo == hi ? p[i] != lo : !(lo < p[i] && p[i] < hi)) return false;
-  }
-  return true;
+  // In the chain's order between the neighbours, equal where they agree: exact comparisons, no
+  // tolerance. (The neighbours differ in every coordinate that must advance strictly, so their
+  // difference gives the segment's dominant axis.)
+  return in_chain_order(w[1] - w[0], w[0], p, w[1]);
 }
 
 OpVerdict can_relocate(const Mesh& mesh, VertexHandle vh, const Point2& p) {

@@ -114,12 +114,8 @@ class CachedStar {
     if (data.kind == VertexKind::Input || open_border_) return false;
     if (!std::isfinite(p.x()) || !std::isfinite(p.y())) return false;
     if (data.kind == VertexKind::OnSegment) {
-      // keeps_segment_order: strictly between the neighbours where they differ, equal where they agree.
-      if (n_along_ < 2) return false;
-      for (int i = 0; i < 2; ++i) {
-        const double lo = std::min(along_[0][i], along_[1][i]), hi = std::max(along_[0][i], along_[1][i]);
-        if (lo == hi ? p[i] != lo : !(lo < p[i] && p[i] < hi)) return false;
-      }
+      // keeps_segment_order's test.
+      if (n_along_ < 2 || !in_chain_order(along_[1] - along_[0], along_[0], p, along_[1])) return false;
       if (has_line_ && !close_enough_to_line(line_, p)) return false;
     }
     for (int i = 0; i < n_; ++i)
