@@ -177,6 +177,25 @@ TEST(HubPatch, the_pipeline_meets_the_bounds_at_a_needle_strip_hub) {
   expect_the_pipeline_meets_the_bounds(d, 2000);
 }
 
+/// A CG:SHOP example's hub (cgshop2025_examples_simple-polygon-exterior_20_98b56c77, scaled by
+/// 1/100 and simplified): a boundary corner of 88.8 degrees split by two segments into sectors of
+/// 11, 77.8 and 0.044 degrees; the 0.044-degree strip is a sliver triangle closed by a segment 29
+/// from the hub, far past the patch's radius (17). (The sliver's far corner is a strip hub too.)
+Domain sliver_strip_longer_than_the_patch() {
+  Domain d;
+  d.points = {Point2(0, 0), polar(50, -65.16), Point2(50, -10), polar(33.8, 23.68), polar(28.9, 23.68 - 0.0441), polar(20, -54.16)};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {4, 3}, {0, 5}};
+  return d;
+}
+
+// Clearing the patch's disk (5% past its radius) took the walls' vertices in that margin, and
+// along the strip the gap left, 0.86 long, is 66 strip widths: the repair stalled beside the one
+// wall edge there (21 obtuse triangles at 118 s; the CG:SHOP example: 12 at 97 s). The seam's
+// walls are now cut from the patch's last wall edge to the mesh's next one: about 20 s.
+TEST(HubPatch, the_pipeline_meets_the_bounds_where_a_strip_runs_on_past_the_patch) {
+  expect_the_pipeline_meets_the_bounds(sliver_strip_longer_than_the_patch(), 2000);
+}
+
 /// Another CG:SHOP instance's hub (exterior_150_fb998503, scaled by 1/100): a convex boundary
 /// corner split by two segments into sectors of 0.25, 31.2 and 46.3 degrees, none as wide as
 /// twice the min bound.
