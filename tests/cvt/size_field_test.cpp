@@ -234,6 +234,32 @@ TEST(SizeField, the_default_field_coarsens_features_past_the_excess_of_its_large
   EXPECT_GT(predicted_vertex_count(strip, local_feature_size_field(strip, p)), 1.5 * predicted_vertex_count(strip, f));
 }
 
+TEST(SizeField, a_wall_few_doubles_wide_gets_as_many_edges_as_it_can_carry_graded_from_its_ends) {
+  // The unit square at x = 2 whose left wall leans 4 doubles of x over its height: a chain on it
+  // can hold 3 points (the referee walks it along x), where 2,000 vertices ask for about 45.
+  double x4 = 2.0;
+  for (int k = 0; k < 4; ++k) x4 = std::nextafter(x4, 3.0);
+  SizeFieldParams p;
+  p.target_vertices = 2000;
+  p.graded = true;
+  auto edges_along_left_wall = [](const SizeField& f, double top_x) {
+    double n = 0;
+    constexpr int kSteps = 20000;
+    for (int k = 0; k < kSteps; ++k) n += (1.0 / kSteps) / f({2.0 + (top_x - 2.0) * (k + 0.5) / kSteps, (k + 0.5) / kSteps});
+    return n;
+  };
+  const Mesh plumb = build_cdt(test::polygon_domain({{2, 0}, {3, 0}, {3, 1}, {2, 1}}, "plumb"));
+  EXPECT_GT(edges_along_left_wall(make_size_field(plumb, p), 2.0), 30) << "an exact vertical carries any number";
+  const Mesh leaning = build_cdt(test::polygon_domain({{2, 0}, {3, 0}, {3, 1}, {x4, 1}}, "leaning"));
+  const SizeField f = make_size_field(leaning, p);
+  const double n = edges_along_left_wall(f, x4);
+  EXPECT_LE(n, 4.0 * 1.1) << "3 points: 4 edges";
+  EXPECT_GE(n, 4.0 * 0.9);
+  // Graded from its ends (as fine there as the plumb wall's field), coarsest half way up.
+  EXPECT_LE(f({2.0, 1e-4}), 1.5 * make_size_field(plumb, p)({2.0, 1e-4}));
+  EXPECT_GT(f({2.0, 0.5}), 3 * f({2.0, 0.02}));
+}
+
 TEST(SizeField, a_field_given_up_at_its_abandon_time_says_so) {
   // The CVT start gives itself up on this flag, not on its own clock: a grading round predicted to
   // outlast the share used to return a uniform field early, and the CVT then ran on it (debug2

@@ -3,6 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
+#include <limits>
+
 #include <cmath>
 
 namespace acute {
@@ -108,6 +112,40 @@ TEST(StrictlyBetweenAlong, lets_a_nearly_level_chain_repeat_its_minor_coordinate
     ++fitted;
   }
   EXPECT_EQ(fitted, 999);
+}
+
+TEST(ChainCapacity, counts_the_doubles_strictly_between_in_the_coordinates_that_advance_strictly) {
+  // Nearly vertical: x advances strictly, so the doubles strictly between the ends' x count.
+  const Point2 a(2.0, 0.6666666666666666), b(2.000000000000002, 1.3333333333333333);
+  std::uint64_t between = 0;
+  for (double x = std::nextafter(a.x(), 3.0); x < b.x(); x = std::nextafter(x, 3.0)) ++between;
+  EXPECT_EQ(chain_capacity(a, b), between);
+  EXPECT_EQ(chain_capacity(b, a), between);
+  // A nearly level wall is limited by x only, which spans many doubles; so is an exact vertical by y.
+  EXPECT_GT(chain_capacity(Point2(1.000001, 0.5), Point2(1.3333333333333335, 0.499999999999998)), 1u << 30);
+  EXPECT_GT(chain_capacity(Point2(2, 0), Point2(2, 1)), 1u << 30);
+  // Across zero the count goes on: -tiny, 0 and +tiny lie strictly between -2 tiny and 2 tiny.
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(chain_capacity(Point2(-2 * tiny, 0), Point2(2 * tiny, 1)), 3u);
+}
+
+TEST(SnapToLine, uses_any_free_double_of_a_wall_few_doubles_wide_where_it_is_needed) {
+  // Nearly vertical, its ends 4 doubles apart in x: three points fit near its lower end, each on
+  // the next x double, where the line's own x is the end's (the walk near the line found only it).
+  double x4 = 2.0;
+  for (int k = 0; k < 4; ++k) x4 = std::nextafter(x4, 3.0);
+  const std::array<Point2, 2> ends{Point2(2.0, 0.0), Point2(x4, 1.0)};
+  ASSERT_EQ(chain_capacity(ends[0], ends[1]), 3u);
+  Point2 prev = ends[0];
+  for (int k = 1; k <= 3; ++k) {
+    const Point2 q(2.0, 0.001 * k);
+    const Point2 p = project_on_line(ends, q, &prev, &ends[1]);
+    ASSERT_TRUE(strictly_between_along(ends, prev, p, ends[1])) << k;
+    EXPECT_NEAR(p.y(), q.y(), 1e-12) << "kept where it was asked for";
+    EXPECT_LE(line_deviation(ends, p), kMaxSegmentDeviation);
+    prev = p;
+  }
+  EXPECT_FALSE(strictly_between_along(ends, prev, project_on_line(ends, Point2(2.0, 0.004), &prev, &ends[1]), ends[1])) << "full";
 }
 
 TEST(InChainOrder, equals_the_neighbours_where_they_agree) {

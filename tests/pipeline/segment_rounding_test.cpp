@@ -68,6 +68,22 @@ TEST(SegmentRounding, tiny_notch_on_a_nearly_level_wall_meets_the_bounds) {
   EXPECT_EQ(test::verify_segment_chains(result.mesh, domain, 1e-10), "");
 }
 
+// A wall 1e-15 out of plumb (stress seed 2091) can carry a few Steiner points; the field beside it
+// is raised to the edges they allow, graded from its ends, and a chain strict in x puts them where
+// the field asks (any x double of the bracket is as near the line). It kept 5 obtuse triangles at
+// the corner beside a fine collinear chain at 5, 20 and 30 s; now it meets the bounds in a second.
+TEST(SegmentRounding, a_wall_few_doubles_wide_beside_a_fine_chain_meets_the_bounds) {
+  const std::string name = "few_doubles_wide_wall_beside_a_fine_chain";
+  const Domain domain = io::read_poly(std::string(acute::test::test_data_dir()) + "/regressions/" + name + ".poly");
+  MeshOptions options;
+  options.target_vertices = 300;
+  options.time_limit_s = 60;  // a safety net
+  const MeshResult result = generate_mesh(domain, options);
+  EXPECT_EQ(result.status, MeshStatus::Ok) << result.remaining.size() << " bad triangles left";
+  EXPECT_EQ(test::verify_conforms(result.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
+  EXPECT_EQ(test::verify_segment_chains(result.mesh, domain, 1e-10), "");
+}
+
 // Sides ~1.1e-7 long at -1000 (an ulp is 1e-6 of them): repeated midpoint splits of the notch
 // pieces either land within kMaxSegmentDeviation of the side's line, in order, or are refused.
 TEST(SegmentRounding, tiny_notch_far_from_origin_splits_stay_on_the_sides_or_are_refused) {

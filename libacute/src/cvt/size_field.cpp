@@ -4,6 +4,7 @@
 #include <acute/delaunay/cdt.h>
 #include <acute/mesh/geometry.h>
 #include <acute/mesh/sectors.h>
+#include <acute/mesh/segments.h>
 #include <acute/predicates/predicates.h>
 
 #include "cvt/narrow_sectors.h"
@@ -474,6 +475,10 @@ bool add_grading_points(LfsSamples& samples, double gradation, double hmax, cons
   return true;
 }
 
+/// How fast the size a tight wall forces falls off with the distance from it: the wall's triangles
+/// need their size about as far as they reach, and beyond that the features' own sizes should win
+/// (at the gradation slope, 0.3, a wall's size overrode a tiny segment a third of its edge away).
+constexpr double kTightWallDecay = 1.0;
 /// Graded fields from lfs samples: values clamp(lfs_factor * lfs, hmin, hmax) at the samples, hmax
 /// on a grid at about hmax (the size can grow away from the features), then gradation-limited
 /// along the Delaunay edges of those points. The triangulation depends only on the grid step, so
@@ -482,7 +487,7 @@ class GradedFields {
  public:
   /// wide_factor: the largest lfs factor at the samples on wide corners (LfsSamples::wide_corners).
   GradedFields(const LfsSamples& samples, const DomainMeasures& dm, double gradation, double wide_factor)
-      : dm_(dm), slope_(std::max(gradation - 1.0, 0.0)), wide_factor_(wide_factor) {
+      : dm_(dm), slope_(std::max(gradation - 1.0, 0.0)), wide_factor_(wide_factor), tight_walls_(samples.tight_walls) {
     const double inf = std::numeric_limits<double>::infinity();
     std::vector<std::array<double, 2>> wide;
     for (const Point2& p : samples.wide_corners) wide.push_back({p.x(), p.y()});
@@ -498,6 +503,61 @@ class GradedFields {
   }
 
   void set_wide_factor(double wide_factor) { wide_factor_ = wide_factor; }
+
+  /// Raises the field beside every tight wall whose field asks for more edges along it than its
+  /// capacity allows: along the wall to F(t) = gamma min(t, L - t) (t from its nearer end, gamma
+  /// such that max(h, F) gives it capacity + 1 edges: the few Steiner points grade from where the
+  /// field is fine, at its ends, instead of being spent there), and off it by F less
+  /// kTightWallDecay times the distance.
+  /// (The last step of a field: a scaling after it would shrink what the walls need.)
+  SizeField raised(const SizeField& field, bool* changed = nullptr) const {
+    if (changed) *changed = false;
+    if (tight_walls_.empty() || !(slope_ > 0) || field.is_uniform()) return field;
+    std::vector<double> values = field.background_values();
+    const auto& points = field.background_points();
+    constexpr int kSamples = 64;  // per half of a wall, denser toward its end (t ~ k^4)
+    std::vector<double> t, h;
+    for (const auto& w : tight_walls_) {
+      const double len = (w.b - w.a).norm();
+      if (!(len > 0)) continue;
+      const Point2 u = (w.b - w.a) / len;
+      t.clear();
+      for (int k = 0; k <= kSamples; ++k) t.push_back(0.5 * len * std::pow(static_cast<double>(k) / kSamples, 4));
+      for (int k = kSamples - 1; k >= 0; --k) t.push_back(len - 0.5 * len * std::pow(static_cast<double>(k) / kSamples, 4));
+      h.clear();
+      for (std::size_t k = 0; k + 1 < t.size(); ++k) h.push_back(field(w.a + 0.5 * (t[k] + t[k + 1]) * u));
+      auto edges = [&](double gamma) {
+        double n = 0;
+        for (std::size_t k = 0; k + 1 < t.size(); ++k) {
+          const double mid = 0.5 * (t[k] + t[k + 1]);
+          n += (t[k + 1] - t[k]) / std::max(h[k], gamma * std::min(mid, len - mid));
+        }
+        return n;
+      };
+      const double allowed = len / w.edge;  // capacity + 1
+      if (edges(0) <= allowed) continue;
+      double lo = 0, hi = 1;
+      for (int k = 0; k < 200 && edges(hi) > allowed; ++k) hi *= 2;
+      for (int k = 0; k < 60; ++k) {
+        const double mid = lo > 0 ? std::sqrt(lo * hi) : 0.5 * hi;
+        (edges(mid) > allowed ? lo : hi) = mid;
+      }
+      const double gamma = hi, reach = gamma * 0.5 * len / kTightWallDecay;
+      const Point2 box_lo = w.a.cwiseMin(w.b) - Point2(reach, reach), box_hi = w.a.cwiseMax(w.b) + Point2(reach, reach);
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const Point2& p = points[i];
+        if (p.x() < box_lo.x() || p.y() < box_lo.y() || p.x() > box_hi.x() || p.y() > box_hi.y()) continue;
+        const double along = std::clamp((p - w.a).dot(u), 0.0, len);
+        const double floor = gamma * std::min(along, len - along) - kTightWallDecay * (p - (w.a + along * u)).norm();
+        if (floor > values[i]) {
+          values[i] = floor;
+          if (changed) *changed = true;
+        }
+      }
+    }
+    return field.with_values(std::move(values));
+  }
+
 
   SizeField make(double lfs_factor, double hmin, double hmax) {
     // Fine enough that the size can grow between the features (values in between are linear).
@@ -532,12 +592,16 @@ class GradedFields {
   std::vector<double> lfs_;
   double wide_factor_;
   std::vector<char> wide_;  ///< the sample is on a wide corner
+  std::vector<LfsSamples::TightWall> tight_walls_;
   double step_ = -1;
   SizeField background_;  ///< samples + grid at step_, triangulated
   std::unique_ptr<EdgeGraph> graph_;  ///< background_'s edges
 };
 
 }  // namespace
+
+/// Pieces that can carry fewer Steiner points than this are tight walls (LfsSamples::tight_walls).
+constexpr std::uint64_t kTightWallCapacity = 1u << 20;
 
 LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap) {
   if (!(spacing_cap > 0)) throw InvalidInput("size field: the lfs spacing cap must be positive");
@@ -561,6 +625,8 @@ LfsSamples local_feature_size_samples(const Mesh& cdt, double spacing_cap) {
     const Point2 a = grid.point(static_cast<std::size_t>(e[0])), b = grid.point(static_cast<std::size_t>(e[1]));
     const double len = (b - a).norm();
     if (!(len > 0)) continue;
+    if (const std::uint64_t capacity = chain_capacity(a, b); capacity < kTightWallCapacity)
+      out.tight_walls.push_back({a, b, len / static_cast<double>(capacity + 1)});
     const Point2 u = (b - a) / len;
     // lfs is 1-Lipschitz: samples one lfs apart keep it within a factor 2 in between.
     // min_step bounds the samples of a long segment beside a long thin feature (16 per spacing);
@@ -660,7 +726,7 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
   const double hmax = graded_hmax(params, dm);
   auto fields = lfs_fields(cdt, params, dm, hmax);
   if (!fields) return given_up(hmax, abandoned);
-  return fields->make(params.lfs_factor, graded_hmin(params, dm, hmax), hmax);
+  return fields->raised(fields->make(params.lfs_factor, graded_hmin(params, dm, hmax), hmax));
 }
 
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned, bool* features_decide, bool* held_back) {
@@ -677,8 +743,9 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
     const double hmax = params.hmax > 0 ? std::min(params.hmax, params.size) : params.size;
     auto fields = lfs_fields(input_cdt, params, dm, hmax);
     if (!fields) return given_up(hmax, abandoned);
-    SizeField f = graded_below(input_cdt, params, dm, hmax, *fields, features_decide);
-    if (!(f.min_value() < params.size)) return SizeField::uniform(params.size);  // nothing finer: the exact lattice
+    bool raised = false;
+    SizeField f = fields->raised(graded_below(input_cdt, params, dm, hmax, *fields, features_decide), &raised);
+    if (!(f.min_value() < params.size) && !raised) return SizeField::uniform(params.size);  // nothing finer: the exact lattice
     return f;
   }
   if (params.target_vertices > 0) {
@@ -713,7 +780,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
       // the count is held.
       double budget = params.max_vertices > 0 ? static_cast<double>(params.max_vertices) : INFINITY;
       double cap = std::min(kMaxFeatureExcess * target, budget);
-      if (at_top <= cap) return ft;
+      if (at_top <= cap) return fields.raised(ft);
       const double coarsest = std::max(params.lfs_factor, kCoarsestLfsFactor);
       bool stop_at_coarsest = true;  // once: past it the budget is the only cap
       const double held = params.hold_count ? std::max(kMaxFeatureExcess * target, params.held_count_at_least) : INFINITY;
@@ -735,7 +802,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
           count = predicted_vertex_count(input_cdt, ft);
           if (count <= std::min(budget, held)) {
             if (features_decide) *features_decide = true;
-            return ft;
+            return fields.raised(ft);
           }
           if (held < budget) {
             // A held count coarsens wide corners too (they would keep it far over the cap: debug2's
@@ -753,7 +820,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
         count = predicted_vertex_count(input_cdt, ft);
         if (count < last_count) exponent = std::clamp(std::log(last_count / count) / std::log(lambda / last_lambda), 0.5, 2.0);
       }
-      return ft;
+      return fields.raised(ft);
     }
     SizeField f = field_at(hn);
     double ratio = predicted_vertex_count(input_cdt, f) / target;
@@ -764,7 +831,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
         f.scale(std::sqrt(ratio));
         ratio = predicted_vertex_count(input_cdt, f) / target;
       }
-      return f;
+      return fields.raised(f);
     }
     double lo = hn, hi = top;  // count(lo) > target > count(hi)
     for (int k = 0; k < 30; ++k) {
@@ -778,7 +845,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
       }
       (ratio > 1.0 ? lo : hi) = mid;
     }
-    return f;
+    return fields.raised(f);
   }
   // Neither: the graded field below the default largest size, with the same excess rule (debug2's
   // needles at the acute start's 0.7 asked for 3.1M vertices, 14 minutes; at 1.0, 1.9M).
@@ -787,7 +854,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
   const double hmax = graded_hmax(params, dm);
   auto fields = lfs_fields(input_cdt, params, dm, hmax);
   if (!fields) return given_up(hmax, abandoned);
-  return graded_below(input_cdt, params, dm, hmax, *fields, features_decide);
+  return fields->raised(graded_below(input_cdt, params, dm, hmax, *fields, features_decide));
 }
 
 }  // namespace acute

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -212,6 +213,30 @@ bool advances_strictly(const Point2& direction, int axis) {
   return axis == 0 || std::fabs(direction.y()) >= std::fabs(direction.x());
 }
 
+namespace {
+
+/// The position of x in the order of the doubles (x finite): consecutive doubles differ by one.
+std::int64_t double_ordinal(double x) {
+  std::int64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return bits < 0 ? std::numeric_limits<std::int64_t>::min() - bits : bits;
+}
+
+}  // namespace
+
+std::uint64_t chain_capacity(const Point2& a, const Point2& b) {
+  const Point2 d = b - a;
+  std::uint64_t capacity = std::numeric_limits<std::uint64_t>::max();
+  for (int i = 0; i < 2; ++i) {
+    if (!advances_strictly(d, i)) continue;
+    const std::int64_t oa = double_ordinal(a[i]), ob = double_ordinal(b[i]);
+    const std::uint64_t between = (oa < ob ? static_cast<std::uint64_t>(ob) - static_cast<std::uint64_t>(oa)
+                                           : static_cast<std::uint64_t>(oa) - static_cast<std::uint64_t>(ob)) - 1;
+    capacity = std::min(capacity, between);
+  }
+  return capacity;
+}
+
 bool in_chain_order(const Point2& direction, const Point2& lo, const Point2& p, const Point2& hi) {
   for (int i = 0; i < 2; ++i) {
     if (lo[i] == hi[i]) {
@@ -302,6 +327,25 @@ Point2 snap_to_line(const std::array<Point2, 2>& ends, const Point2& q, const Po
       }
     }
   }
+  if (best_dev <= kMaxSegmentDeviation || lo == nullptr || hi == nullptr) return best;
+  // Nothing near the line's own doubles fits the bracket: on a wall a few doubles wide in its
+  // minor coordinate (1e-15 out of plumb), the line's x near q is the bracket's, and the walk above
+  // finds only x values the chain has used. Any x of the bracket is as near the line there (a few
+  // doubles, far within kMaxSegmentDeviation of its length): q with each coordinate that must
+  // advance moved into the bracket (its double next to the nearer end), so a chain's few points go
+  // where they are needed.
+  Point2 c = q;
+  for (int i = 0; i < 2; ++i) {
+    const double from = (*lo)[i], to = (*hi)[i];
+    if (from == to) {
+      c[i] = from;
+    } else if (!strictly_between(c[i], from, to)) {
+      // The bracket's double nearest q: next to the end q is beyond, else next to the start.
+      const bool past_to = from < to ? c[i] >= to : c[i] <= to;
+      c[i] = past_to ? std::nextafter(to, from) : std::nextafter(from, to);
+    }
+  }
+  if (in_bracket(ends, c, lo, hi) && close_enough_to_line(ends, c)) return c;
   return best;
 }
 

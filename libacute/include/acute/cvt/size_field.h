@@ -142,6 +142,15 @@ struct LfsSamples {
   /// lfs factor asked for (the split needs a vertex inside the corner: at a strip's square end,
   /// an edge as long as the strip is wide leaves no room for one).
   std::vector<Point2> wide_corners;
+  /// Segment pieces that can carry only a few Steiner points (chain_capacity: a wall 1e-15 out of
+  /// plumb spans a few doubles in x) and the edge length they force, length / (capacity + 1): the
+  /// field is at least that near them, less the gradation slope with the distance, so the mesh
+  /// beside such a wall is as coarse as its edges (finer, every triangle on it was a sliver).
+  struct TightWall {
+    Point2 a, b;
+    double edge = 0;
+  };
+  std::vector<TightWall> tight_walls;
 };
 /// The sector angle from which an input corner counts as wide (LfsSamples::wide_corners): 80
 /// degrees, below the default max bound so that bounds down to 80 degrees are covered.

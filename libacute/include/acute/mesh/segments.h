@@ -5,6 +5,7 @@
 #include <acute/mesh/mesh.h>
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace acute {
@@ -49,6 +50,12 @@ bool advances_strictly(const Point2& direction, int axis);
 /// to be read back as the segment; on a nearly vertical segment a few ulps wide in x it bounds
 /// the number of Steiner points.
 bool strictly_between_along(const std::array<Point2, 2>& ends, const Point2& lo, const Point2& p, const Point2& hi);
+
+/// How many points a segment chain can hold strictly between a and b (the ends of a segment piece):
+/// the doubles strictly between them in each coordinate that must advance strictly
+/// (advances_strictly), the fewest of those. Huge but for near-degenerate pieces: a wall 1e-15 out
+/// of plumb spans a few doubles in x, so it carries only a few Steiner points however long it is.
+std::uint64_t chain_capacity(const Point2& a, const Point2& b);
 
 /// The same for a vertex's two neighbours lo and hi along its segment, the segment's direction
 /// given (their difference will do): where they agree p must equal them.
