@@ -512,9 +512,11 @@ class GradedFields {
   /// (The last step of a field: a scaling after it would shrink what the walls need.)
   SizeField raised(const SizeField& field, bool* changed = nullptr) const {
     if (changed) *changed = false;
-    if (tight_walls_.empty() || !(slope_ > 0) || field.is_uniform()) return field;
+    if (tight_walls_.empty() || field.is_uniform()) return field;
     std::vector<double> values = field.background_values();
     const auto& points = field.background_points();
+    std::vector<std::size_t> by_x;  // the background points in x order, once a wall needs them
+    bool any = false;
     constexpr int kSamples = 64;  // per half of a wall, denser toward its end (t ~ k^4)
     std::vector<double> t, h;
     for (const auto& w : tight_walls_) {
@@ -544,20 +546,25 @@ class GradedFields {
       }
       const double gamma = hi, reach = gamma * 0.5 * len / kTightWallDecay;
       const Point2 box_lo = w.a.cwiseMin(w.b) - Point2(reach, reach), box_hi = w.a.cwiseMax(w.b) + Point2(reach, reach);
-      for (std::size_t i = 0; i < points.size(); ++i) {
-        const Point2& p = points[i];
-        if (p.x() < box_lo.x() || p.y() < box_lo.y() || p.x() > box_hi.x() || p.y() > box_hi.y()) continue;
+      if (by_x.empty()) {
+        by_x.resize(points.size());
+        for (std::size_t i = 0; i < points.size(); ++i) by_x[i] = i;
+        std::sort(by_x.begin(), by_x.end(), [&](std::size_t i, std::size_t j) { return points[i].x() < points[j].x(); });
+      }
+      // Only the slab of the wall's reach in x: no pass over every point per wall.
+      auto first = std::lower_bound(by_x.begin(), by_x.end(), box_lo.x(), [&](std::size_t i, double x) { return points[i].x() < x; });
+      for (auto it = first; it != by_x.end() && points[*it].x() <= box_hi.x(); ++it) {
+        const Point2& p = points[*it];
+        if (p.y() < box_lo.y() || p.y() > box_hi.y()) continue;
         const double along = std::clamp((p - w.a).dot(u), 0.0, len);
         const double floor = gamma * std::min(along, len - along) - kTightWallDecay * (p - (w.a + along * u)).norm();
-        if (floor > values[i]) {
-          values[i] = floor;
-          if (changed) *changed = true;
-        }
+        if (floor > values[*it]) values[*it] = floor, any = true;
       }
     }
+    if (!any) return field;
+    if (changed) *changed = true;
     return field.with_values(std::move(values));
   }
-
 
   SizeField make(double lfs_factor, double hmin, double hmax) {
     // Fine enough that the size can grow between the features (values in between are linear).
