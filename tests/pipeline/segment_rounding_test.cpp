@@ -18,15 +18,27 @@
 namespace acute {
 namespace {
 
-void expect_segments_read_back(const std::string& name) {
+/// The regression `name` meshed at ~300 vertices within `seconds`; its mesh checked conforming and
+/// its segment chains read back by the referee's rule, whatever stopped the run.
+MeshResult mesh_regression(const std::string& name, double seconds) {
   const Domain domain = io::read_poly(std::string(acute::test::test_data_dir()) + "/regressions/" + name + ".poly");
   MeshOptions options;
   options.target_vertices = 300;
-  options.time_limit_s = 3;  // a safety net: validity is asserted whatever stopped the run
-  const MeshResult result = generate_mesh(domain, options);
-  const double area = mesh_area(build_domain_cdt(domain));
-  EXPECT_EQ(test::verify_conforms(result.mesh, domain, area), "") << name;
+  options.time_limit_s = seconds;
+  MeshResult result = generate_mesh(domain, options);
+  EXPECT_EQ(test::verify_conforms(result.mesh, domain, mesh_area(build_domain_cdt(domain))), "") << name;
   EXPECT_EQ(test::verify_segment_chains(result.mesh, domain, 1e-10), "") << name;
+  return result;
+}
+
+void expect_segments_read_back(const std::string& name) {
+  mesh_regression(name, 3);  // a safety net: validity is asserted whatever stopped the run
+}
+
+/// The regression also meets the angle bounds (within `seconds`, a safety net).
+void expect_the_bounds_met(const std::string& name, double seconds) {
+  const MeshResult result = mesh_regression(name, seconds);
+  EXPECT_EQ(result.status, MeshStatus::Ok) << name << ": " << result.remaining.size() << " bad triangles left";
 }
 
 // Sides ~4e-5 long at -1000, where an ulp is ~3e-9 of them: rounded midpoints left the line.
@@ -42,30 +54,14 @@ TEST(SegmentRounding, tiny_notch_far_from_origin) { expect_segments_read_back("t
 // split back on the vertex it replaced (the most exact double within 1/64 of the wall): 160
 // iterations on one 108-degree triangle. Now the bounds are met, well within the time limit.
 TEST(SegmentRounding, strip_apex_on_a_short_wall_far_from_origin_meets_the_bounds) {
-  const std::string name = "strip_apex_on_a_short_wall_far_from_origin";
-  const Domain domain = io::read_poly(std::string(acute::test::test_data_dir()) + "/regressions/" + name + ".poly");
-  MeshOptions options;
-  options.target_vertices = 300;
-  options.time_limit_s = 30;  // a safety net: the run takes under a second
-  const MeshResult result = generate_mesh(domain, options);
-  EXPECT_EQ(result.status, MeshStatus::Ok) << result.remaining.size() << " bad triangles left";
-  EXPECT_EQ(test::verify_conforms(result.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
-  EXPECT_EQ(test::verify_segment_chains(result.mesh, domain, 1e-10), "");
+  expect_the_bounds_met("strip_apex_on_a_short_wall_far_from_origin", 30);  // (a safety net: the run takes under a second)
 }
 
 // A 1e-6 notch on a wall 2e-15 out of level (stress seed 32): the wall's chain may repeat y (the
 // referee walks it along x), so it grades down to the notch; strict in y it could take some 18
 // Steiner points and kept a 166-degree sliver.
 TEST(SegmentRounding, tiny_notch_on_a_nearly_level_wall_meets_the_bounds) {
-  const std::string name = "tiny_notch_on_a_nearly_level_wall";
-  const Domain domain = io::read_poly(std::string(acute::test::test_data_dir()) + "/regressions/" + name + ".poly");
-  MeshOptions options;
-  options.target_vertices = 300;
-  options.time_limit_s = 60;  // a safety net: the run takes about a second
-  const MeshResult result = generate_mesh(domain, options);
-  EXPECT_EQ(result.status, MeshStatus::Ok) << result.remaining.size() << " bad triangles left";
-  EXPECT_EQ(test::verify_conforms(result.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
-  EXPECT_EQ(test::verify_segment_chains(result.mesh, domain, 1e-10), "");
+  expect_the_bounds_met("tiny_notch_on_a_nearly_level_wall", 60);  // (a safety net: the run takes about a second)
 }
 
 // A wall 1e-15 out of plumb (stress seed 2091) can carry a few Steiner points; the field beside it
@@ -73,15 +69,7 @@ TEST(SegmentRounding, tiny_notch_on_a_nearly_level_wall_meets_the_bounds) {
 // the field asks (any x double of the bracket is as near the line). It kept 5 obtuse triangles at
 // the corner beside a fine collinear chain at 5, 20 and 30 s; now it meets the bounds in a second.
 TEST(SegmentRounding, a_wall_few_doubles_wide_beside_a_fine_chain_meets_the_bounds) {
-  const std::string name = "few_doubles_wide_wall_beside_a_fine_chain";
-  const Domain domain = io::read_poly(std::string(acute::test::test_data_dir()) + "/regressions/" + name + ".poly");
-  MeshOptions options;
-  options.target_vertices = 300;
-  options.time_limit_s = 60;  // a safety net
-  const MeshResult result = generate_mesh(domain, options);
-  EXPECT_EQ(result.status, MeshStatus::Ok) << result.remaining.size() << " bad triangles left";
-  EXPECT_EQ(test::verify_conforms(result.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
-  EXPECT_EQ(test::verify_segment_chains(result.mesh, domain, 1e-10), "");
+  expect_the_bounds_met("few_doubles_wide_wall_beside_a_fine_chain", 60);  // (a safety net)
 }
 
 // Sides ~1.1e-7 long at -1000 (an ulp is 1e-6 of them): repeated midpoint splits of the notch
