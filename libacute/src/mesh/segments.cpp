@@ -237,23 +237,25 @@ std::uint64_t chain_capacity(const Point2& a, const Point2& b) {
   return capacity;
 }
 
+namespace {
+
+/// Coordinate i of p between lo's and hi's in a chain of this direction's order.
+bool coordinate_in_order(const Point2& direction, int i, const Point2& lo, const Point2& p, const Point2& hi) {
+  return advances_strictly(direction, i) ? strictly_between(p[i], lo[i], hi[i]) : weakly_between(p[i], lo[i], hi[i]);
+}
+
+}  // namespace
+
 bool in_chain_order(const Point2& direction, const Point2& lo, const Point2& p, const Point2& hi) {
-  for (int i = 0; i < 2; ++i) {
-    if (lo[i] == hi[i]) {
-      if (p[i] != lo[i]) return false;
-    } else if (!(advances_strictly(direction, i) ? strictly_between(p[i], lo[i], hi[i]) : weakly_between(p[i], lo[i], hi[i]))) {
-      return false;
-    }
-  }
+  for (int i = 0; i < 2; ++i)
+    if (lo[i] == hi[i] ? p[i] != lo[i] : !coordinate_in_order(direction, i, lo, p, hi)) return false;
   return true;
 }
 
 bool strictly_between_along(const std::array<Point2, 2>& ends, const Point2& lo, const Point2& p, const Point2& hi) {
   const Point2 d = ends[1] - ends[0];
-  for (int i = 0; i < 2; ++i) {
-    if (d[i] == 0) continue;
-    if (!(advances_strictly(d, i) ? strictly_between(p[i], lo[i], hi[i]) : weakly_between(p[i], lo[i], hi[i]))) return false;
-  }
+  for (int i = 0; i < 2; ++i)
+    if (d[i] != 0 && !coordinate_in_order(d, i, lo, p, hi)) return false;
   return true;
 }
 

@@ -47,6 +47,8 @@ constexpr double kClearMargin = 1.05;
 constexpr double kHubGap = 0.95;
 /// At most this many hubs are patched (each costs a copy of the mesh).
 constexpr int kMaxHubs = 16;
+/// The most edges a wall's seam is cut into (append_seam_radii).
+constexpr int kMaxSeamEdges = 4096;
 
 struct Wall {
   Point2 u;          ///< direction from the hub
@@ -168,10 +170,10 @@ void append_seam_radii(const Mesh& mesh, HalfedgeHandle spoke, std::vector<doubl
     if ((point2(mesh, w) - c).norm() > (f - c).norm()) far_edge = (point2(mesh, w) - f).norm();
   }
   if (!(near_edge > 0) || !(gap > 0)) return;
-  const int n = static_cast<int>(std::lround(2.0 * gap / (near_edge + far_edge)));
+  // (At most kMaxSeamEdges: a needle strip's wall edges at the seam can be 1e-5 of the gap.)
+  const int n = static_cast<int>(std::min<double>(std::round(2.0 * gap / (near_edge + far_edge)), kMaxSeamEdges));
   if (n < 2) return;
-  double total = 0;
-  for (int k = 0; k < n; ++k) total += near_edge + (far_edge - near_edge) * (k + 0.5) / n;
+  const double total = 0.5 * n * (near_edge + far_edge);  // the progression's sum
   double r = outer;
   for (int k = 0; k + 1 < n; ++k) {
     r += gap * (near_edge + (far_edge - near_edge) * (k + 0.5) / n) / total;
