@@ -52,8 +52,9 @@ struct MeshOptions {
   std::size_t max_vertices = 50'000'000;
   double time_limit_s = 0;      ///< 0: none
   /// Method::Acute: when the repair stalls with a few bad triangles left (not at the time limit,
-  /// the vertex budget or a max_iterations given), run again from a start with another seed, up to
-  /// this many times, within what is left of the time limit; the best result is kept (see notes).
+  /// the vertex budget or a max_iterations given), run again from a start with another seed and a
+  /// size field 5% finer each time (about 10% more vertices), up to this many times, within what
+  /// is left of the time limit; the best result is kept (see notes).
   int restarts = 2;
   CdtOptions cdt;
   std::function<void(const MeshProgress&)> observer;

@@ -476,6 +476,7 @@ void detail::cvt_mesh_into(Mesh& mesh, CvtResult& out, const Domain& domain, con
     }
     out.size_field = out.size_field.with_values(std::move(values));
   }
+  if (params.size_scale > 0 && params.size_scale != 1.0) out.size_field.scale(params.size_scale);
   if (size_field_abandoned || (params.time_limit_s > 0 && elapsed() > params.time_limit_s)) {
     out.out_of_time = out.abandoned = true;
     return;
