@@ -399,6 +399,25 @@ TEST(Cvt, a_size_cap_makes_its_region_finer_and_leaves_the_rest) {
   EXPECT_GT(capped.mesh.n_vertices(), 2 * plain.mesh.n_vertices());
 }
 
+TEST(Cvt, a_size_scale_scales_the_whole_field_and_the_count_by_its_inverse_square) {
+  // A graded field (sharp corners of the bundled A) scaled by 0.8: every size 0.8 times, about
+  // 1 / 0.64 the vertices, the constraints kept.
+  const Domain d = io::read_domain(std::string(test::meshes_dir()) + "/A.poly");
+  CvtParams params;
+  params.graded = true;
+  params.lbfgs_iterations = 10;
+  const CvtResult plain = cvt_mesh(d, params);
+  params.size_scale = 0.8;
+  const CvtResult finer = cvt_mesh(d, params);
+  EXPECT_EQ(test::verify_valid(finer.mesh), "");
+  expect_constraints_kept(finer.mesh, d);
+  for (const Point2& p : {Point2(0.1, 0.2), Point2(0.5, 0.5), d.points.front()})
+    EXPECT_NEAR(finer.size_field(p), 0.8 * plain.size_field(p), 1e-12 * plain.size_field(p));
+  const double ratio = static_cast<double>(finer.mesh.n_vertices()) / static_cast<double>(plain.mesh.n_vertices());
+  EXPECT_GT(ratio, 1.3);
+  EXPECT_LT(ratio, 1.8);
+}
+
 /// Vertices of `now` away from where they were in `start`.
 std::size_t moved_vertices(const Mesh& now, const Mesh& start) {
   std::size_t moved = 0;

@@ -46,8 +46,8 @@ TEST(MeshDomain, a_size_coarser_than_the_features_is_graded_down_to_them) {
   EXPECT_LT(longest, 2.0 * options.size) << path;
 }
 
-/// A bundled CG:SHOP instance meshed at ~2,000 vertices meets [30, 90) and conforms (a time limit
-/// of 120 s as a safety net: each run takes a few seconds).
+/// A bundled CG:SHOP instance meshed at ~2,000 vertices (0: the default size) meets [30, 90) and
+/// conforms (a time limit of 120 s as a safety net: each run takes a few seconds).
 void expect_cgshop_instance_meets_the_bounds(const std::string& name, std::size_t vertices = 2000) {
   const std::string path = std::string(acute::test::meshes_dir()) + "/cgshop/" + name;
   const Domain domain = io::read_domain(path);
@@ -94,6 +94,14 @@ TEST(MeshDomain, a_right_angled_input_sector_of_one_triangle_meets_the_bounds) {
 // divided along the strip's width and the instance meets the bounds in under a second.
 TEST(MeshDomain, a_long_boundary_side_of_a_narrow_strip_is_divided_and_meets_the_bounds) {
   expect_cgshop_instance_meets_the_bounds("simple-polygon-exterior_20_87cff693.instance.json");  // about 1 s
+}
+
+// A 34-degree corner between two segments (a CG:SHOP exterior instance) at the default size: the
+// start put the walls' first points where one of them kept two triangles on its straight side
+// (90.0008 + 89.999 degrees), and three seeds met the same plateau (70 s, one obtuse triangle).
+// A restart now also refines the start's size field by 5%, which meets the bounds.
+TEST(MeshDomain, a_restart_with_a_finer_start_leaves_a_plateau_that_other_seeds_meet_again) {
+  expect_cgshop_instance_meets_the_bounds("simple-polygon-exterior_40_785575e7.instance.json", 0);  // about 8 s
 }
 
 // A plateau of the repair's search: a segment vertex left with two right triangles on one side
