@@ -165,7 +165,7 @@ void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code
       ->excludes(size);
   cmd->add_option("--seed", args->options.seed, "Random seed (deterministic output)")->capture_default_str();
   cmd->add_option("--max-iterations", args->options.max_iterations, "Iteration cap (0: method default)");
-  cmd->add_option("--restarts", args->options.restarts, "When the acute repair stalls with a few bad triangles, run again from another seed's start, up to this many times")
+  cmd->add_option("--restarts", args->options.restarts, "When the acute repair stalls with a few bad triangles, run again from another seed's start with a 5% finer size field each time, up to this many times")
       ->check(CLI::Range(0, 100))
       ->capture_default_str();
   cmd->add_option("--max-vertices", args->options.max_vertices, "Vertex budget")->capture_default_str();

@@ -123,10 +123,16 @@ constexpr unsigned kRestartSeedStep = 7919;
 /// 34-degree corner with three seeds, and met the bounds in 1-4 s at 0.95 and 0.9 of the size).
 constexpr double kRestartSizeScale = 0.95;
 
+/// A run that a restart may follow stops after this many iterations without a new best
+/// (RepairParams::stagnation_limit_before_restart); the last one keeps the repair's default.
+constexpr int kStagnationBeforeRestart = 50;
+
 /// One run of the method; `stalled` tells whether an acute repair ended on its own iteration
 /// cap or stagnation (not at the time limit, the vertex budget or a cancel). size_scale: the
-/// start's size field times this (CvtParams::size_scale).
-MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, bool& stalled, double size_scale = 1.0);
+/// start's size field times this (CvtParams::size_scale); restart_may_follow: a stall with a few
+/// bad triangles is given up sooner.
+MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, bool& stalled, double size_scale = 1.0,
+                              bool restart_may_follow = false);
 
 }  // namespace
 
@@ -134,7 +140,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
   check_options(options);
   const auto start = std::chrono::steady_clock::now();
   bool stalled = false;
-  MeshResult best = generate_mesh_once(domain, options, stalled);
+  MeshResult best = generate_mesh_once(domain, options, stalled, 1.0, options.restarts > 0);
   // The repair's search is local: on some domains one seed's start leads it into a plateau (a
   // few triangles that no edit improves) that another seed's start avoids. A run that stalls
   // with a few bad triangles is restarted from another seed, within what is left of the time
@@ -151,7 +157,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       again.time_limit_s = options.time_limit_s - seconds_since(start);
       if (again.time_limit_s < 0.25 * options.time_limit_s) break;
     }
-    MeshResult r = generate_mesh_once(domain, again, stalled, std::pow(kRestartSizeScale, k));
+    MeshResult r = generate_mesh_once(domain, again, stalled, std::pow(kRestartSizeScale, k), k < options.restarts);
     const std::string what = "the repair stalled with " + std::to_string(best.remaining.size()) + " bad triangle(s); restarted with seed " +
                              std::to_string(again.seed) + " and a " + std::to_string(static_cast<int>(std::lround(100 * (1 - std::pow(kRestartSizeScale, k))))) + "% finer size: " + (r.status == MeshStatus::Ok ? "bounds met" : std::to_string(r.remaining.size()) + " left");
     if (r.status == MeshStatus::Ok || r.remaining.size() < best.remaining.size()) {
@@ -165,7 +171,7 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
 
 namespace {
 
-MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, bool& stalled, double size_scale) {
+MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, bool& stalled, double size_scale, bool restart_may_follow) {
   stalled = false;
   const auto start = std::chrono::steady_clock::now();
   MeshResult result;
@@ -285,6 +291,10 @@ MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, 
       params.graded_corners = patched_hubs;
       if (options.max_iterations > 0) params.max_iterations = options.max_iterations;
       params.max_vertices = options.max_vertices;
+      if (restart_may_follow) {
+        params.stagnation_limit_before_restart = kStagnationBeforeRestart;
+        params.restart_at_most = kRestartAtMost;
+      }
       if (options.time_limit_s > 0) params.time_limit_s = std::max(options.time_limit_s - seconds_since(start), 1e-9);
       if (options.observer)
         params.observer = [&](const RepairProgress& p) { options.observer(MeshProgress{"repair", p.iteration, p.bad, 0}); };

@@ -40,12 +40,6 @@ std::vector<FaceHandle> bad_triangles(const Mesh& mesh, const AngleBounds& bound
 
 namespace {
 
-/// Iterations without a new best before giving up: stuck clusters get fresh random re-samplings
-/// every iteration, so some persistence pays; but past this a run seldom recovers, and the
-/// pipeline's restart from another start does better sooner. (Runs that met the bounds went at
-/// most 21 iterations without a new best: 300 stress domains, the 150 CG:SHOP instances at the
-/// default size and at ~1k vertices, the 40 CG:SHOP examples, 25 classic domains.)
-constexpr int kStagnationLimit = 50;
 /// On a plateau (this many iterations without a new best), every kKickEvery-th iteration each
 /// cluster that no candidate improves takes its best candidate anyway: a local optimum of the
 /// search (a segment vertex with two right triangles on one side, where every single edit scores
@@ -98,7 +92,8 @@ class Repairer {
         result_.status = RepairStatus::Converged;
         break;
       }
-      if (it >= params_.max_iterations || stagnation > kStagnationLimit) {
+      const bool restart_follows = params_.stagnation_limit_before_restart > 0 && best_bad <= params_.restart_at_most;
+      if (it >= params_.max_iterations || stagnation > (restart_follows ? params_.stagnation_limit_before_restart : params_.stagnation_limit)) {
         result_.status = RepairStatus::IterationLimit;
         break;
       }

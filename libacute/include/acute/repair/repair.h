@@ -32,6 +32,16 @@ struct RepairParams {
   /// log-polar hub patches): left out of that rebuild.
   std::vector<Point2> graded_corners;
   double time_limit_s = 0;         ///< 0: none
+  /// Iterations without a new best (fewest bad triangles) before stopping: stuck clusters get
+  /// fresh random re-samplings every iteration, so some persistence pays.
+  int stagnation_limit = 150;
+  /// When > 0: a run whose best has at most restart_at_most bad triangles stops after this many
+  /// iterations without a new best instead. For a caller that restarts such a run from another
+  /// start (generate_mesh): past ~50 a run seldom recovers, and runs that met the bounds went at
+  /// most 21 iterations without a new best (300 stress domains, CG:SHOP's 150 instances at the
+  /// default size and ~1k, its 40 examples, 25 classic domains).
+  int stagnation_limit_before_restart = 0;
+  std::size_t restart_at_most = 0;
   std::function<void(const RepairProgress&)> observer;
   std::function<bool()> cancel;    ///< returns true to stop early
 };
