@@ -157,9 +157,12 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       again.time_limit_s = options.time_limit_s - seconds_since(start);
       if (again.time_limit_s < 0.25 * options.time_limit_s) break;
     }
-    MeshResult r = generate_mesh_once(domain, again, stalled, std::pow(kRestartSizeScale, k), k < options.restarts);
+    const double size_scale = std::pow(kRestartSizeScale, k);
+    MeshResult r = generate_mesh_once(domain, again, stalled, size_scale, k < options.restarts);
+    const long finer_percent = std::lround(100 * (1 - size_scale));
     const std::string what = "the repair stalled with " + std::to_string(best.remaining.size()) + " bad triangle(s); restarted with seed " +
-                             std::to_string(again.seed) + " and a " + std::to_string(static_cast<int>(std::lround(100 * (1 - std::pow(kRestartSizeScale, k))))) + "% finer size: " + (r.status == MeshStatus::Ok ? "bounds met" : std::to_string(r.remaining.size()) + " left");
+                             std::to_string(again.seed) + " and a " + std::to_string(finer_percent) + "% finer size: " +
+                             (r.status == MeshStatus::Ok ? "bounds met" : std::to_string(r.remaining.size()) + " left");
     if (r.status == MeshStatus::Ok || r.remaining.size() < best.remaining.size()) {
       r.iterations += best.iterations;
       best = std::move(r);
