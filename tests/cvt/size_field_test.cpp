@@ -260,6 +260,30 @@ TEST(SizeField, a_wall_few_doubles_wide_gets_as_many_edges_as_it_can_carry_grade
   EXPECT_GT(f({2.0, 0.5}), 3 * f({2.0, 0.02}));
 }
 
+TEST(SizeField, a_scaled_field_is_finer_everywhere_but_beside_a_wall_that_cannot_carry_more) {
+  // The leaning square above with scale 0.8 (a restart's finer start): away from the leaning
+  // wall's raise the sizes are 0.8 times, and the wall still gets the 4 edges it can carry
+  // (scaled after its raise, it would ask for 5).
+  double x4 = 2.0;
+  for (int k = 0; k < 4; ++k) x4 = std::nextafter(x4, 3.0);
+  const Mesh leaning = build_cdt(test::polygon_domain({{2, 0}, {3, 0}, {3, 1}, {x4, 1}}, "leaning"));
+  SizeFieldParams p;
+  p.target_vertices = 2000;
+  p.graded = true;
+  const SizeField plain = make_size_field(leaning, p);
+  p.scale = 0.8;
+  const SizeField finer = make_size_field(leaning, p);
+  for (const Point2& q : {Point2(2.99, 0.02), Point2(2.5, 0.02), Point2(2.99, 0.99)})  // out of the wall's raise
+    EXPECT_NEAR(finer(q), 0.8 * plain(q), 1e-9 * plain(q)) << q.transpose();
+  double n = 0;
+  constexpr int kSteps = 20000;
+  for (int k = 0; k < kSteps; ++k) n += (1.0 / kSteps) / finer({2.0 + (x4 - 2.0) * (k + 0.5) / kSteps, (k + 0.5) / kSteps});
+  EXPECT_LE(n, 4.0 * 1.1);
+  EXPECT_GE(n, 4.0 * 0.9);
+  p.scale = 0;
+  EXPECT_THROW(make_size_field(leaning, p), InvalidInput);
+}
+
 TEST(SizeField, a_field_given_up_at_its_abandon_time_says_so) {
   // The CVT start gives itself up on this flag, not on its own clock: a grading round predicted to
   // outlast the share used to return a uniform field early, and the CVT then ran on it (debug2

@@ -458,6 +458,7 @@ void detail::cvt_mesh_into(Mesh& mesh, CvtResult& out, const Domain& domain, con
   sp.gradation = params.gradation;
   sp.lfs_factor = params.lfs_factor;
   sp.hmax = params.hmax;
+  sp.scale = params.size_scale;
   sp.max_vertices = params.max_vertices;
   sp.hold_count = params.hold_count;
   sp.held_count_at_least = params.held_count_at_least;
@@ -476,7 +477,6 @@ void detail::cvt_mesh_into(Mesh& mesh, CvtResult& out, const Domain& domain, con
     }
     out.size_field = out.size_field.with_values(std::move(values));
   }
-  if (params.size_scale > 0 && params.size_scale != 1.0) out.size_field.scale(params.size_scale);
   if (size_field_abandoned || (params.time_limit_s > 0 && elapsed() > params.time_limit_s)) {
     out.out_of_time = out.abandoned = true;
     return;

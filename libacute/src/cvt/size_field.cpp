@@ -486,8 +486,8 @@ constexpr double kTightWallDecay = 1.0;
 class GradedFields {
  public:
   /// wide_factor: the largest lfs factor at the samples on wide corners (LfsSamples::wide_corners).
-  GradedFields(const LfsSamples& samples, const DomainMeasures& dm, double gradation, double wide_factor)
-      : dm_(dm), slope_(std::max(gradation - 1.0, 0.0)), wide_factor_(wide_factor), tight_walls_(samples.tight_walls) {
+  GradedFields(const LfsSamples& samples, const DomainMeasures& dm, double gradation, double wide_factor, double scale)
+      : dm_(dm), slope_(std::max(gradation - 1.0, 0.0)), wide_factor_(wide_factor), scale_(scale), tight_walls_(samples.tight_walls) {
     const double inf = std::numeric_limits<double>::infinity();
     std::vector<std::array<double, 2>> wide;
     for (const Point2& p : samples.wide_corners) wide.push_back({p.x(), p.y()});
@@ -504,14 +504,15 @@ class GradedFields {
 
   void set_wide_factor(double wide_factor) { wide_factor_ = wide_factor; }
 
-  /// Raises the field beside every tight wall whose field asks for more edges along it than its
-  /// capacity allows: along the wall to F(t) = gamma min(t, L - t) (t from its nearer end, gamma
+  /// The field times SizeFieldParams::scale, then raised beside every tight wall whose field asks
+  /// for more edges along it than its capacity allows: along the wall to F(t) = gamma min(t, L - t) (t from its nearer end, gamma
   /// such that max(h, F) gives it capacity + 1 edges: the few Steiner points grade from where the
   /// field is fine, at its ends, instead of being spent there), and off it by F less
   /// kTightWallDecay times the distance.
   /// (The last step of a field: a scaling after it would shrink what the walls need.)
-  SizeField raised(const SizeField& field, bool* changed = nullptr) const {
+  SizeField finished(SizeField field, bool* changed = nullptr) const {
     if (changed) *changed = false;
+    if (scale_ != 1.0) field.scale(scale_);
     if (tight_walls_.empty() || field.is_uniform()) return field;
     std::vector<double> values = field.background_values();
     const auto& points = field.background_points();
@@ -598,6 +599,7 @@ class GradedFields {
   std::vector<Point2> points_;  ///< the samples with a finite lfs
   std::vector<double> lfs_;
   double wide_factor_;
+  double scale_;
   std::vector<char> wide_;  ///< the sample is on a wide corner
   std::vector<LfsSamples::TightWall> tight_walls_;
   double step_ = -1;
@@ -697,7 +699,7 @@ std::optional<GradedFields> lfs_fields(const Mesh& cdt, const SizeFieldParams& p
   if (!add_grading_points(samples, params.gradation, hmax, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||
       past_abandon_time(params, start))
     return std::nullopt;
-  return std::optional<GradedFields>(std::in_place, samples, dm, params.gradation, params.lfs_factor);
+  return std::optional<GradedFields>(std::in_place, samples, dm, params.gradation, params.lfs_factor, params.scale);
 }
 
 double graded_hmax(const SizeFieldParams& params, const DomainMeasures& dm) {
@@ -733,7 +735,7 @@ SizeField local_feature_size_field(const Mesh& cdt, const SizeFieldParams& param
   const double hmax = graded_hmax(params, dm);
   auto fields = lfs_fields(cdt, params, dm, hmax);
   if (!fields) return given_up(hmax, abandoned);
-  return fields->raised(fields->make(params.lfs_factor, graded_hmin(params, dm, hmax), hmax));
+  return fields->finished(fields->make(params.lfs_factor, graded_hmin(params, dm, hmax), hmax));
 }
 
 SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, bool* abandoned, bool* features_decide, bool* held_back) {
@@ -741,8 +743,9 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
   if (features_decide) *features_decide = false;
   if (held_back) *held_back = false;
   if (params.size < 0 || !std::isfinite(params.size)) throw InvalidInput("size field: --size must be positive");
+  if (!(params.scale > 0) || !std::isfinite(params.scale)) throw InvalidInput("size field: the scale must be positive");
   if (params.size > 0) {
-    if (!params.graded) return SizeField::uniform(params.size);
+    if (!params.graded) return SizeField::uniform(params.scale * params.size);
     // The size is the largest; where the features need finer, the graded field of the local
     // feature size (with the count path's excess rule against the uniform size's count).
     const DomainMeasures dm = measure_domain(input_cdt);
@@ -751,14 +754,14 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
     auto fields = lfs_fields(input_cdt, params, dm, hmax);
     if (!fields) return given_up(hmax, abandoned);
     bool raised = false;
-    SizeField f = fields->raised(graded_below(input_cdt, params, dm, hmax, *fields, features_decide), &raised);
-    if (!(f.min_value() < params.size) && !raised) return SizeField::uniform(params.size);  // nothing finer: the exact lattice
+    SizeField f = fields->finished(graded_below(input_cdt, params, dm, hmax, *fields, features_decide), &raised);
+    if (!(f.min_value() < params.scale * params.size) && !raised) return SizeField::uniform(params.scale * params.size);  // nothing finer: the exact lattice
     return f;
   }
   if (params.target_vertices > 0) {
     const DomainMeasures dm = measure_domain(input_cdt);
     const double hn = size_for_vertex_count(dm, params.target_vertices);
-    if (!params.graded) return SizeField::uniform(hn);
+    if (!params.graded) return SizeField::uniform(params.scale * hn);
     // The graded field with hmax = hn is <= hn everywhere, so it predicts >= N vertices; raise hmax
     // (never the lfs-bound values) until the count comes down to N, or to hmax = diameter.
     const auto start = std::chrono::steady_clock::now();
@@ -772,7 +775,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
     if (!add_grading_points(samples, params.gradation, hn, [&](double next_s) { return past_abandon_time(params, start, next_s); }) ||
         past_abandon_time(params, start))
       return given_up(hn, abandoned);
-    GradedFields fields(samples, dm, params.gradation, params.lfs_factor);
+    GradedFields fields(samples, dm, params.gradation, params.lfs_factor, params.scale);
     auto field_at = [&](double hmax) { return fields.make(params.lfs_factor, hmin, hmax); };
     const double top = std::max(hn, dm.diameter);
     if (past_abandon_time(params, start)) return given_up(hn, abandoned);
@@ -787,7 +790,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
       // the count is held.
       double budget = params.max_vertices > 0 ? static_cast<double>(params.max_vertices) : INFINITY;
       double cap = std::min(kMaxFeatureExcess * target, budget);
-      if (at_top <= cap) return fields.raised(ft);
+      if (at_top <= cap) return fields.finished(ft);
       const double coarsest = std::max(params.lfs_factor, kCoarsestLfsFactor);
       bool stop_at_coarsest = true;  // once: past it the budget is the only cap
       const double held = params.hold_count ? std::max(kMaxFeatureExcess * target, params.held_count_at_least) : INFINITY;
@@ -809,7 +812,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
           count = predicted_vertex_count(input_cdt, ft);
           if (count <= std::min(budget, held)) {
             if (features_decide) *features_decide = true;
-            return fields.raised(ft);
+            return fields.finished(ft);
           }
           if (held < budget) {
             // A held count coarsens wide corners too (they would keep it far over the cap: debug2's
@@ -827,7 +830,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
         count = predicted_vertex_count(input_cdt, ft);
         if (count < last_count) exponent = std::clamp(std::log(last_count / count) / std::log(lambda / last_lambda), 0.5, 2.0);
       }
-      return fields.raised(ft);
+      return fields.finished(ft);
     }
     SizeField f = field_at(hn);
     double ratio = predicted_vertex_count(input_cdt, f) / target;
@@ -838,7 +841,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
         f.scale(std::sqrt(ratio));
         ratio = predicted_vertex_count(input_cdt, f) / target;
       }
-      return fields.raised(f);
+      return fields.finished(f);
     }
     double lo = hn, hi = top;  // count(lo) > target > count(hi)
     for (int k = 0; k < 30; ++k) {
@@ -852,7 +855,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
       }
       (ratio > 1.0 ? lo : hi) = mid;
     }
-    return fields.raised(f);
+    return fields.finished(f);
   }
   // Neither: the graded field below the default largest size, with the same excess rule (debug2's
   // needles at the acute start's 0.7 asked for 3.1M vertices, 14 minutes; at 1.0, 1.9M).
@@ -861,7 +864,7 @@ SizeField make_size_field(const Mesh& input_cdt, const SizeFieldParams& params, 
   const double hmax = graded_hmax(params, dm);
   auto fields = lfs_fields(input_cdt, params, dm, hmax);
   if (!fields) return given_up(hmax, abandoned);
-  return fields->raised(graded_below(input_cdt, params, dm, hmax, *fields, features_decide));
+  return fields->finished(graded_below(input_cdt, params, dm, hmax, *fields, features_decide));
 }
 
 }  // namespace acute

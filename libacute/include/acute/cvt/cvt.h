@@ -91,8 +91,8 @@ struct CvtParams {
   /// When set: the graded field is at most size_cap(p) (taken at its background points; values
   /// <= 0 or not finite are no cap). No effect on a uniform field (--size, or graded = false).
   std::function<double(const Point2&)> size_cap;
-  /// Every size of the field (graded or uniform, after size_cap) times this: a restart's
-  /// slightly finer start (see MeshOptions::restarts).
+  /// Every size of the field times this (SizeFieldParams::scale; size_cap still caps it): a
+  /// restart's slightly finer start (see MeshOptions::restarts).
   double size_scale = 1.0;
   int lloyd_iterations = 10;
   int lbfgs_iterations = 200;

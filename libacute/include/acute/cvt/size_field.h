@@ -86,6 +86,10 @@ struct SizeFieldParams {
   double lfs_factor = 1.0;        ///< graded field: h = lfs_factor * local feature size at input points
   double hmin = 0;                ///< graded field clamp; 0: kMinSizeRatio * diameter
   double hmax = 0;                ///< graded field clamp; 0: kDefaultMaxSizeRatio * diameter
+  /// Every size of the field, as the rules above give it, times this (a restart's finer start).
+  /// Applied before the last step, the raise beside walls that can carry only a few Steiner
+  /// points (LfsSamples::tight_walls): those need their size whatever the scale.
+  double scale = 1.0;
   /// > 0: with target_vertices, the field predicts at most this many vertices (coarsening the
   /// feature-bound sizes when the features alone would need more)
   std::size_t max_vertices = 0;
