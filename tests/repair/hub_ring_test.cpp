@@ -270,6 +270,56 @@ TEST(EqualiseStripApexes, outward_moves_the_nearer_wall_vertex_to_the_farther_ra
   test::expect_commit_keeps_the_mesh(mesh, region, sub, area);
 }
 
+TEST(ApexWithMiddlePoint, a_one_triangle_corner_between_interior_segments_gets_an_isosceles_apex_and_a_point_beyond) {
+  // A 34-degree wedge between two interior segments holds one triangle at its apex. Beyond it, the
+  // base vertices each need a third triangle on their straight side: a point on the bisector past
+  // the apex triangle's base, joined to both. (Outward, first radii 1.5 times apart or more are
+  // not equalised, and the candidate declines: here the CVT start's are 0.87 and 1.74.)
+  for (bool outward : {false, true}) {
+    SCOPED_TRACE(outward);
+    Mesh mesh = cvt_mesh(test::wedge_between_segments(34), 400);
+    const double area = test::total_area(mesh);
+    const VertexHandle apex_big = vertex_at(mesh, Point2(0, 0));
+    ASSERT_TRUE(apex_big.is_valid());
+    detail::Region region;
+    ASSERT_TRUE(detail::extract_region(mesh, vertices_near(mesh, apex_big, 4.0), forced_corner_vertices(mesh, 30), region));
+    Mesh sub = region.sub;
+    const VertexHandle apex = vertex_at(sub, Point2(0, 0));
+    ASSERT_TRUE(apex.is_valid());
+    const std::size_t vertices_before = sub.n_vertices();
+    if (!detail::apex_with_middle_point(sub, apex, kStrip, 2 * kStrip, outward)) {
+      EXPECT_TRUE(outward) << "inward, the first radii are always equalised";
+      continue;
+    }
+    // The wedge's one triangle at the apex: the face between the 0- and 34-degree spokes.
+    FaceHandle apex_face;
+    for (auto fh : sub.vf_range(apex)) {
+      Point2 centre(0, 0);
+      for (auto vh : sub.fv_range(fh)) centre += point2(sub, vh) / 3.0;
+      const double deg = std::atan2(centre.y(), centre.x()) * 180 / kPi;
+      if (deg > 0 && deg < 34) {
+        EXPECT_FALSE(apex_face.is_valid()) << "one triangle in the wedge";
+        apex_face = fh;
+      }
+    }
+    ASSERT_TRUE(apex_face.is_valid());
+    std::vector<VertexHandle> base;
+    for (auto vh : sub.fv_range(apex_face))
+      if (vh != apex) base.push_back(vh);
+    ASSERT_EQ(base.size(), 2u);
+    const double r = point2(sub, base[0]).norm();
+    EXPECT_NEAR(point2(sub, base[1]).norm(), r, 1e-12 * r) << "isosceles";
+    // The new point: on the bisector, joined to both base vertices.
+    ASSERT_GT(sub.n_vertices(), vertices_before);
+    const VertexHandle middle(static_cast<int>(sub.n_vertices()) - 1);
+    const Point2 q = point2(sub, middle);
+    EXPECT_NEAR(std::atan2(q.y(), q.x()) * 180 / kPi, 17.0, 1e-9);
+    EXPECT_GT(q.norm(), r);
+    for (auto vh : base) EXPECT_TRUE(sub.find_halfedge(middle, vh).is_valid());
+    test::expect_commit_keeps_the_mesh(mesh, region, sub, area);
+  }
+}
+
 TEST(EqualiseStripApexes, strips_side_by_side_sharing_a_wall_all_end_isosceles) {
   // Three interior segments from the centre of a square at 0, 10 and 22 degrees: two strips share
   // the 10-degree wall (as in clusters.poly under a 35-degree bound). Removing one strip's far wall

@@ -10,6 +10,8 @@ namespace acute {
 
 namespace {
 constexpr double kDeg = 180.0 / 3.14159265358979323846;
+/// Degrees: the referee counts angles this close to a bound as on it (meshcheck's ANGLE_TOL).
+constexpr double kAngleTolerance = 1e-9;
 
 double angle_at(const Point2& p, const Point2& a, const Point2& b) {
   const Point2 u = a - p, v = b - p;
@@ -29,7 +31,7 @@ std::vector<bool> forced_corner_vertices(const Mesh& mesh, double min_deg) {
     // Every sector starts at a wall spoke with a face on its left.
     for (auto start : mesh.voh_range(vh)) {
       if (mesh.is_boundary(start) || !is_wall(start)) continue;
-      if (sweep_sector(mesh, start, is_wall).degrees < min_deg - 1e-9) forced[static_cast<std::size_t>(vh.idx())] = true;
+      if (sweep_sector(mesh, start, is_wall).degrees < min_deg - kAngleTolerance) forced[static_cast<std::size_t>(vh.idx())] = true;
     }
   }
   return forced;
@@ -74,7 +76,25 @@ double triangle_margin(const Mesh& mesh, FaceHandle fh, const AngleBounds& bound
   // they decide the same, and only near it is the referee's formula worth its cost.
   const double fast = margin_of({approx_angle_deg(p[0], p[1], p[2]), approx_angle_deg(p[1], p[2], p[0]), approx_angle_deg(p[2], p[0], p[1])});
   if (std::abs(fast - bounds.margin_deg) > 1e-4) return fast;
-  return margin_of(angles_deg(p[0], p[1], p[2]));
+  const auto a = angles_deg(p[0], p[1], p[2]);
+  double margin = margin_of(a);
+  if (exempt_min || margin >= bounds.margin_deg) return margin;
+  // An input corner of the min bound's own angle, to rounding, filled by this one triangle: its
+  // angle is the input's and no edit can widen it. The referee accepts angles down to min - 1e-9,
+  // so such an angle is in bounds; asking it for the margin too made a 30-degree corner (30 + 4e-15
+  // in doubles) unsatisfiable: 8 s of restarts and a "bounds not met" for a mesh the referee passes.
+  const auto v = face_vertices(mesh, fh);
+  margin = bounds.max_deg - std::max({a[0], a[1], a[2]});
+  for (int k = 0; k < 3; ++k) {
+    double m = a[k] - bounds.min_deg;
+    if (m < bounds.margin_deg && m >= -kAngleTolerance && is_input(mesh, v[k])) {
+      const HalfedgeHandle into = mesh.find_halfedge(v[(k + 2) % 3], v[k]), out = mesh.find_halfedge(v[k], v[(k + 1) % 3]);
+      if (into.is_valid() && out.is_valid() && is_constrained(mesh, mesh.edge_handle(into)) && is_constrained(mesh, mesh.edge_handle(out)))
+        m = bounds.margin_deg;
+    }
+    margin = std::min(margin, m);
+  }
+  return margin;
 }
 
 namespace {

@@ -177,6 +177,29 @@ bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below, boo
   return changed;
 }
 
+bool apex_with_middle_point(Mesh& sub, VertexHandle apex, double strip_below, double one_triangle_below, bool outward) {
+  equalise_strip_apexes(sub, apex, one_triangle_below, outward);  // (false also when already equal)
+  const Point2 c = point2(sub, apex);
+  std::vector<Point2> points;
+  for (const SegmentSector& sector : segment_sectors(sub, apex)) {
+    if (sector.radians < strip_below || sector.radians >= one_triangle_below) continue;
+    const VertexHandle a = sub.to_vertex_handle(sector.first), b = sub.to_vertex_handle(sector.last);
+    const double ra = first_radius(sub, sector.first), rb = first_radius(sub, sector.last);
+    if (std::abs(ra - rb) > 1e-9 * std::max(ra, rb)) continue;  // not equalised (outward, a radius twice another's)
+    const double r = 0.5 * (ra + rb);
+    const double half = 0.5 * sector.radians;
+    const Point2 bisector = ((point2(sub, a) - c).normalized() + (point2(sub, b) - c).normalized()).normalized();
+    constexpr double kQuarterPi = 0.78539816339744830962;
+    points.push_back(c + r * (std::cos(half) + std::sin(half) * std::tan(kQuarterPi + 0.5 * half)) * bisector);
+  }
+  bool inserted = false;
+  for (const Point2& q : points) {
+    const VertexHandle vh = insert_point_from(sub, q, apex);
+    inserted = inserted || (vh.is_valid() && !is_input(sub, vh));
+  }
+  return inserted;
+}
+
 std::vector<double> plan_ring_gaps(double sector, double strip_first, double strip_last, double gap_floor) {
   // Gaps from both walls, each side growing, until they fill the sector; then scaled to fit.
   std::vector<double> from_a, from_b;

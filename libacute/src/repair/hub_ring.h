@@ -23,6 +23,16 @@ namespace acute::detail {
 /// that holds one triangle, whose nearer wall vertex may be left with too few triangles beside it).
 bool equalise_strip_apexes(Mesh& sub, VertexHandle apex, double strip_below, bool outward = false);
 
+/// A sector at apex that holds one triangle (from strip_below to one_triangle_below radians,
+/// wholly in sub) leaves a base vertex of its apex triangle with two triangles on its wall's
+/// straight side (90 + 90) wherever the mesh beyond is one triangle wide, as between two interior
+/// segments whose vertices stay. So after equalise_strip_apexes (outward when `outward`) a point is
+/// put on the sector's bisector where the triangle over the apex triangle's base has the base
+/// angles 45 + theta / 4 that give each base vertex three triangles of equal angles. False when
+/// no such sector at apex has equal first radii after the equalisation (outward, it leaves radii
+/// 1.5 times apart or more as they are) or no point could be inserted.
+bool apex_with_middle_point(Mesh& sub, VertexHandle apex, double strip_below, double one_triangle_below, bool outward);
+
 /// The radius of the disk around `apex` that rebuild_hub_ring would change (1.1 times the largest
 /// first radius of a ringed sector's walls), 0 when no wide sector at apex has a strip across a wall.
 double hub_ring_reach(const Mesh& mesh, VertexHandle apex, double strip_below);

@@ -467,7 +467,15 @@ class Repairer {
     // that mattered (a 90-degree input corner of one right triangle: the bisector point, then a
     // vertex for its degree-4 star, ranked eighth behind six of them).
     level1.erase(std::remove_if(level1.begin(), level1.end(), [&](const Outcome& o) { return !(o.score < base) && !(base < o.score); }), level1.end());
-    if (level1.size() > 6) level1.resize(6);
+    // Six first steps: the best five, and the best structural edit at a sharp corner if none is
+    // among them (its first step scores worse than the point insertions: an apex point with four
+    // neighbours is itself infeasible until a second step gives it a fifth).
+    if (level1.size() > 6) {
+      auto structural = [](const Outcome& o) { return o.kind == kApexMiddle || o.kind == kWedge || o.kind == kHub || o.kind == kRefan; };
+      const auto first_structural = std::find_if(level1.begin(), level1.end(), structural);
+      if (first_structural != level1.end() && first_structural - level1.begin() >= 6) std::iter_swap(level1.begin() + 5, first_structural);
+      level1.resize(6);
+    }
     for (const auto& first : level1) {
       if (out_of_time()) break;
       std::vector<Outcome> level2;
@@ -490,7 +498,7 @@ class Repairer {
   enum CandidateKind : int {
     kSmooth, kSplitMidpoint, kSplitFoot, kCircumcentre, kCentroid, kBisector, kLinkSplit, kWallSplit, kLinkFlip,
     kCompoundSplit, kNearBridges, kAllBridges, kCollapse, kRemoveCorner, kRemoveLowDegree, kRemoveLowDegreeRest,
-    kWedge, kHub, kEqualiseApexes, kRemesh, kRefan, kCandidateKinds
+    kWedge, kHub, kEqualiseApexes, kApexMiddle, kRemesh, kRefan, kCandidateKinds
   };
 
   /// Applies each candidate operation to a copy of sub0 (then relocation) and collects the results.
@@ -752,6 +760,10 @@ class Repairer {
       // beside the apex triangle (two on its straight side: a right angle smoothing cannot open).
       if (one_triangle)
         attempt(kEqualiseApexes, [&, vh](Mesh& sub) { return detail::equalise_strip_apexes(sub, vh, one_triangle_below, /*outward=*/true); });
+      // Or either, and a point beyond the apex triangle that gives its base vertices a third triangle.
+      if (one_triangle)
+        for (bool outward : {false, true})
+          attempt(kApexMiddle, [&, vh, outward](Mesh& sub) { return detail::apex_with_middle_point(sub, vh, strip_below, one_triangle_below, outward); });
     }
     joint_first = false;
 
