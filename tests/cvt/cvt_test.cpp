@@ -161,6 +161,35 @@ TEST(Sampling, a_coarse_needle_tip_is_one_apex_triangle_out_to_half_its_wall_and
   EXPECT_NEAR(at_hub[2], 3.0, 1e-12);
 }
 
+TEST(Sampling, a_piece_between_right_angled_corners_is_cut_at_least_once) {
+  // A 7 x 7 square inside a 20 x 20 one, its sides interior segments: at a size of 5 (7 / 5
+  // rounds to one piece) every side would stay whole, and the cell's four right angles would have
+  // to share interior vertices over it (a grid of such cells kept 98 bad triangles for 60 s).
+  Domain d = test::polygon_domain({{0, 0}, {20, 0}, {20, 20}, {0, 20}}, "square_with_a_cell");
+  const std::size_t first = d.points.size();
+  for (const Point2& p : {Point2(6.5, 6.5), Point2(13.5, 6.5), Point2(13.5, 13.5), Point2(6.5, 13.5)}) d.points.push_back(p);
+  for (std::size_t k = 0; k < 4; ++k) d.segments.push_back({first + k, first + (k + 1) % 4});
+  const Mesh cdt = build_cdt(d);
+  const Mesh mesh = sample_domain(d, cdt, SizeField::uniform(5.0), {});
+  for (std::size_t k = 0; k < 4; ++k) {
+    const Point2 a = d.points[first + k], b = d.points[first + (k + 1) % 4];
+    std::size_t cuts = 0;
+    for (auto vh : mesh.vertices()) {
+      const Point2 p = point2(mesh, vh);
+      cuts += mesh.data(vh).kind == VertexKind::OnSegment && std::abs((b - a).x() * (p - a).y() - (b - a).y() * (p - a).x()) < 1e-9 &&
+              (p - a).dot(b - a) > 0 && (p - b).dot(a - b) > 0;
+    }
+    EXPECT_EQ(cuts, 1u) << "side " << k;
+  }
+  // The outer square's sides (20 long, 4 pieces at size 5) are divided by the size alone.
+  std::size_t on_outer = 0;
+  for (auto vh : mesh.vertices()) {
+    const Point2 p = point2(mesh, vh);
+    on_outer += mesh.data(vh).kind == VertexKind::OnSegment && (p.x() == 0 || p.y() == 0 || p.x() == 20 || p.y() == 20);
+  }
+  EXPECT_EQ(on_outer, 12u);
+}
+
 TEST(Sampling, uniform_field_gives_a_hexagonal_interior) {
   // Away from the boundary rows, every sample has six neighbours at exactly the spacing: the
   // lattice start is a centroidal Voronoi tessellation there already.

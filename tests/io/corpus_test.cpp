@@ -32,7 +32,7 @@ void expect_domains_load(const std::vector<std::string>& files) {
 
 TEST(Corpus, bundled_poly_and_cgshop_domains_validate) {
   const auto polys = files_in(kMeshes, {".poly"});
-  EXPECT_EQ(polys.size(), 27u) << "24 classic + 3 hand-made domains in " << kMeshes;
+  EXPECT_EQ(polys.size(), 28u) << "24 classic + 3 hand-made + 1 generated (zoo) domains in " << kMeshes;
   expect_domains_load(polys);
   const auto cgshop = files_in(kMeshes + "/cgshop", {".json"});
   EXPECT_EQ(cgshop.size(), 14u) << "one small instance per class and nine regression instances (meshes/SOURCES.md)";

@@ -66,6 +66,21 @@ TEST(MeshDomain, an_input_corner_at_the_min_bound_to_rounding_meets_the_bounds) 
   }
 }
 
+// A floating grid of interior segments 7 apart at the default size (4.9 near them): 7 / 4.9 rounds
+// to one piece, so the sides of its cells were left whole, and a cell's four right angles had to
+// share interior vertices over them: 5-98 bad triangles after 60 s with any seed. A piece between
+// two right-angled corners is now cut at least once, and the grid meets the bounds in a second.
+TEST(MeshDomain, a_grid_of_interior_segments_about_a_spacing_apart_meets_the_bounds) {
+  const std::string path = std::string(acute::test::meshes_dir()) + "/cgrid_lines10_floating.poly";
+  const Domain domain = io::read_domain(path);
+  MeshOptions options;
+  options.restarts = 0;
+  options.time_limit_s = 60;  // a safety net: the run takes about a second
+  const MeshResult r = generate_mesh(domain, options);
+  EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
+  EXPECT_EQ(test::verify_conforms(r.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
+}
+
 /// A bundled CG:SHOP instance meshed at ~2,000 vertices (0: the default size) meets [30, 90) and
 /// conforms (a time limit of 120 s as a safety net: each run takes a few seconds).
 void expect_cgshop_instance_meets_the_bounds(const std::string& name, std::size_t vertices = 2000, int restarts = MeshOptions().restarts) {

@@ -39,8 +39,9 @@ constexpr double kPi = 3.14159265358979323846;
 inline double unit(std::mt19937& rng) { return (static_cast<double>(rng()) + 0.5) * (1.0 / 4294967296.0); }
 
 /// Positions along [0, L] of the interior division points of a piece [s0, s1] of segment a + s u,
-/// n = max(1, round(integral of 1/h)) pieces of equal integral.
-void divide(const SizeField& field, const Point2& a, const Point2& u, double s0, double s1, int& hint, std::vector<double>& out) {
+/// n = max(min_pieces, round(integral of 1/h)) pieces of equal integral.
+void divide(const SizeField& field, const Point2& a, const Point2& u, double s0, double s1, int& hint, std::vector<double>& out,
+            int min_pieces = 1) {
   const double len = s1 - s0;
   if (!(len > 0)) return;
   auto inv_h = [&](double s) { return 1.0 / field.eval(a + s * u, hint); };
@@ -63,7 +64,7 @@ void divide(const SizeField& field, const Point2& a, const Point2& u, double s0,
   const double total = cum.back();
   // Rounded to nearest: rounding up splits every piece slightly longer than h into two short
   // ones, which measured worse (more obtuse triangles on the classic domains).
-  const int n = std::max(1, static_cast<int>(std::lround(total)));
+  const int n = std::max(min_pieces, static_cast<int>(std::lround(total)));
   std::size_t i = 0;
   for (int j = 1; j < n; ++j) {
     const double target = total * j / n;
@@ -295,6 +296,9 @@ void detail::sample_domain_into(Mesh& mesh, const Domain& domain, const Mesh& cd
   // Concentric shells: the first point on every constrained edge at a corner below 60 degrees is at
   // the same distance from the apex.
   std::vector<double> shell(cdt.n_vertices(), 0.0), strip_shell(cdt.n_vertices(), 0.0);
+  // Vertices with a sector from kWideCornerDeg to 180 degrees: it needs two triangles, so a vertex
+  // inside it or on its walls (a right-angled corner).
+  std::vector<char> wide(cdt.n_vertices(), 0);
   const WallTest is_wall = [&](HalfedgeHandle h) { return seg_of(h) >= 0; };
   int hint = -1;
   for (auto vh : cdt.vertices()) {
@@ -305,7 +309,10 @@ void detail::sample_domain_into(Mesh& mesh, const Domain& domain, const Mesh& cd
       if (seg_of(h) < 0) continue;
       shortest = std::min(shortest, (point2(cdt, cdt.to_vertex_handle(h)) - v).norm());
       // The sector counter-clockwise from h through the faces up to the next constrained edge.
-      if (!cdt.is_boundary(h) && sweep_sector(cdt, h, is_wall, 100000).radians < kPi / 3.0) sharp = true;
+      if (cdt.is_boundary(h)) continue;
+      const double radians = sweep_sector(cdt, h, is_wall, 100000).radians;
+      if (radians < kPi / 3.0) sharp = true;
+      if (radians >= kWideCornerDeg * kPi / 180.0 && radians < kPi) wide[static_cast<std::size_t>(vh.idx())] = 1;
     }
     if (sharp) {
       ++stats.small_angle_apices;
@@ -337,7 +344,12 @@ void detail::sample_domain_into(Mesh& mesh, const Domain& domain, const Mesh& cd
     const double ra = first_cut(h), rb = first_cut(cdt.opposite_halfedge_handle(h));
     cuts.clear();
     if (ra > 0) cuts.push_back(ra);
-    divide(field, a, u, ra, len - rb, hint, cuts);
+    // A piece between two right-angled (wide) corners is cut at least once: left whole, its
+    // corners' triangles must share one interior vertex over it, and a cell of such pieces (a grid
+    // of interior segments 1.4 spacings apart) was left with right angles the repair could not
+    // undo (98 bad triangles after 60 s; cut in two, it meets the bounds in about a second).
+    const bool between_wide = ra == 0 && rb == 0 && wide[static_cast<std::size_t>(va.idx())] && wide[static_cast<std::size_t>(vb.idx())];
+    divide(field, a, u, ra, len - rb, hint, cuts, between_wide ? 2 : 1);
     if (rb > 0) cuts.push_back(len - rb);
     Piece piece{va, vb, s, {}};
     const auto& ends = table[static_cast<std::size_t>(s)];
