@@ -174,15 +174,24 @@ bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, con
   // Fewer columns than line offsets to try: walk the columns, the nearest to the line first (the
   // offset loop below took 65,536 rounds per failed snap: most of the fuzz_mesher timeout).
   if (m_hi - m_lo + 1 < 2 * static_cast<i128>(r_max)) return try_columns(m_lo, m_hi, r_max);
+  // m dj1 == res (mod dk1): the columns m0 + t period, m0 = res inv mod period stepped by inv from
+  // residue to residue, and the one nearest q is q plus the centred difference of m0 and q's class
+  // (a 128-bit division and a rounding per residue were most of a far-translated domain's time).
+  const std::int64_t q_class = period == 1 ? 0 : static_cast<std::int64_t>(((static_cast<i128>(qk) % period) + period) % period);
+  std::int64_t m0_pos = 0;  // r inv mod period, in [0, period)
   for (std::int64_t r = 0; r <= r_max; ++r) {
     for (const std::int64_t res : {r, -r}) {
       if (r == 0 && res != r) continue;
-      // m dj1 == res (mod dk1): m0 the solution in [0, period).
-      const std::int64_t m0 = period == 1 ? 0 : static_cast<std::int64_t>(((static_cast<i128>(res) * inv) % period + period) % period);
-      const std::int64_t t = static_cast<std::int64_t>(std::llround(static_cast<double>(qk - m0) / static_cast<double>(period)));
+      const std::int64_t m0 = res >= 0 || m0_pos == 0 ? m0_pos : period - m0_pos;
+      std::int64_t d = m0 - q_class;  // in (-period, period); centred into (-period / 2, period / 2]
+      if (d > period - d) d -= period;
+      else if (-d >= period + d) d += period;
+      const i128 nearest = static_cast<i128>(qk) + d;
       for (const std::int64_t dt : {0, -1, 1})
-        if (accept(static_cast<i128>(m0) + static_cast<i128>(t + dt) * period, res)) return true;
+        if (accept(nearest + static_cast<i128>(dt) * period, res)) return true;
     }
+    m0_pos += inv;  // both below period < 2^62: no overflow
+    if (m0_pos >= period) m0_pos -= period;
   }
   return false;
 }
@@ -326,6 +335,7 @@ Point2 snap_to_line(const std::array<Point2, 2>& ends, const Point2& q, const Po
   // Walk the dominant axis ulp by ulp; in each column the doubles nearest the exact line are the
   // rounded line ordinate and its two neighbours (the ordinate is computed to about an ulp).
   const double slope = d[j] / d[k];
+  const double len2 = d.squaredNorm();
   double up = q[k], down = q[k];
   for (int step = 0; step < kMaxWindow && !(step >= kWindow && best_dev <= kAcceptable); ++step) {
     up = std::nextafter(up, inf);
@@ -337,6 +347,12 @@ Point2 snap_to_line(const std::array<Point2, 2>& ends, const Point2& q, const Po
         c[k] = xk;
         c[j] = y;
         if (!in_bracket(ends, c, lo, hi)) continue;
+        // Most candidates are no nearer than the best: the filtered determinant shows it without
+        // the exact one (the walk runs all 4,096 columns when no double is within kAcceptable,
+        // as on a short segment far from the origin: most of A.poly's time at 1e6).
+        double error = 0;
+        const double estimate = std::fabs(predicates::orient2d_estimate(a, b, c, error));
+        if (estimate - error > best_dev * len2 * (1 + 0x1p-48)) continue;
         const double dev = line_deviation(ends, c);
         if (dev < best_dev) {
           best = c;
