@@ -38,6 +38,40 @@ TEST(AngleBounds, narrow_input_corner_is_forced_and_wide_one_is_not) {
   for (bool f : forced_corner_vertices(wide, 30)) EXPECT_FALSE(f);
 }
 
+/// The one triangle of a domain: the corner at the origin between legs of lengths 10 and `other`.
+Mesh one_triangle(double angle_deg, double other = 10) {
+  const double a = angle_deg * 3.14159265358979323846 / 180.0;
+  Domain d;
+  d.points = {Point2(0, 0), Point2(10, 0), Point2(other * std::cos(a), other * std::sin(a))};
+  d.segments = {{0, 1}, {1, 2}, {2, 0}};
+  return build_domain_cdt(d);
+}
+
+TEST(AngleBounds, an_input_corner_at_the_min_bound_to_rounding_is_not_asked_for_the_margin) {
+  // 30 degrees from cos and sin (a few ulps off): the triangle's angle there is the input's.
+  for (double other : {10.0, 9.0}) {  // angles 30, 75, 75 and 30, 63.9, 86.1
+    const Mesh m = one_triangle(30, other);
+    const auto forced = forced_corner_vertices(m, 30);
+    EXPECT_FALSE(is_bad_triangle(m, *m.faces().begin(), AngleBounds{}, forced)) << other;
+  }
+}
+
+TEST(AngleBounds, the_apex_triangle_of_an_unsatisfiable_sector_is_good_to_working_bounds_only_while_nearly_isosceles) {
+  // An 8-degree corner under a max of 85: its triangle's base angles are at least 86 degrees.
+  AngleBounds asked;
+  asked.min_deg = 35, asked.max_deg = 85;
+  AngleBounds working = asked;
+  working.unsatisfiable_apex_slack_deg = 0.5;
+  const Mesh isosceles = one_triangle(8), lopsided = one_triangle(8, 7);  // base angles 86 / 86; 80.6 / 91.4
+  const auto forced = forced_corner_vertices(isosceles, asked.min_deg);
+  EXPECT_TRUE(is_bad_triangle(isosceles, *isosceles.faces().begin(), asked, forced));
+  EXPECT_FALSE(is_bad_triangle(isosceles, *isosceles.faces().begin(), working, forced));
+  EXPECT_TRUE(is_bad_triangle(lopsided, *lopsided.faces().begin(), working, forced_corner_vertices(lopsided, asked.min_deg)));
+  // A sector the bounds allow gets no slack: a 12-degree corner's base angles can be 84.
+  const Mesh satisfiable = one_triangle(12, 9);
+  EXPECT_TRUE(is_bad_triangle(satisfiable, *satisfiable.faces().begin(), working, forced_corner_vertices(satisfiable, asked.min_deg)));
+}
+
 TEST(AngleBounds, right_triangle_is_bad_for_strict_90) {
   Domain d;
   d.points = {Point2(0, 0), Point2(1, 0), Point2(0, 1)};

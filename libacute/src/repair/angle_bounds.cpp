@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace acute {
 
@@ -64,6 +65,34 @@ bool min_exempt_corner(const Mesh& mesh, VertexHandle vh, FaceHandle fh, double 
   return sector_angle(mesh, vh, fh) < min_deg;
 }
 
+namespace {
+
+/// True when fh alone fills the input sector at its corner k (both its edges there are segments).
+bool fills_input_sector(const Mesh& mesh, const std::array<VertexHandle, 3>& v, int k) {
+  if (!is_input(mesh, v[k])) return false;
+  const HalfedgeHandle into = mesh.find_halfedge(v[(k + 2) % 3], v[k]), out = mesh.find_halfedge(v[k], v[(k + 1) % 3]);
+  return into.is_valid() && out.is_valid() && is_constrained(mesh, mesh.edge_handle(into)) && is_constrained(mesh, mesh.edge_handle(out));
+}
+
+/// The margin of fh under AngleBounds::unsatisfiable_apex_slack_deg when fh is such an apex
+/// triangle, else nothing.
+std::optional<double> unsatisfiable_apex_margin(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds, bool exempt_min) {
+  const auto p = face_points(mesh, fh);
+  const auto a = angles_deg(p[0], p[1], p[2]);
+  const auto v = face_vertices(mesh, fh);
+  for (int k = 0; k < 3; ++k) {
+    // (Its best, isosceles, leaves base angles of (180 - a) / 2: short of max by less than the margin.)
+    if (!(a[k] < 180.0 - 2.0 * (bounds.max_deg - bounds.margin_deg)) || !fills_input_sector(mesh, v, k)) continue;
+    const double ceiling = 0.5 * (180.0 - a[k]) + bounds.unsatisfiable_apex_slack_deg;
+    double margin = ceiling - std::max(a[(k + 1) % 3], a[(k + 2) % 3]);
+    if (!exempt_min) margin = std::min(margin, std::min({a[0], a[1], a[2]}) - bounds.min_deg);
+    return margin;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 double triangle_margin(const Mesh& mesh, FaceHandle fh, const AngleBounds& bounds, bool exempt_min) {
   const auto p = face_points(mesh, fh);
   auto margin_of = [&](const std::array<double, 3>& a) {
@@ -75,6 +104,9 @@ double triangle_margin(const Mesh& mesh, FaceHandle fh, const AngleBounds& bound
   // The polynomial angles are within 2e-6 degrees of atan2's: away from the bad-or-not threshold
   // they decide the same, and only near it is the referee's formula worth its cost.
   const double fast = margin_of({approx_angle_deg(p[0], p[1], p[2]), approx_angle_deg(p[1], p[2], p[0]), approx_angle_deg(p[2], p[0], p[1])});
+  if (bounds.unsatisfiable_apex_slack_deg >= 0 && fast < bounds.margin_deg) {
+    if (const auto relaxed = unsatisfiable_apex_margin(mesh, fh, bounds, exempt_min)) return *relaxed;
+  }
   if (std::abs(fast - bounds.margin_deg) > 1e-4) return fast;
   const auto a = angles_deg(p[0], p[1], p[2]);
   double margin = margin_of(a);
@@ -87,11 +119,7 @@ double triangle_margin(const Mesh& mesh, FaceHandle fh, const AngleBounds& bound
   margin = bounds.max_deg - std::max({a[0], a[1], a[2]});
   for (int k = 0; k < 3; ++k) {
     double m = a[k] - bounds.min_deg;
-    if (m < bounds.margin_deg && m >= -kAngleTolerance && is_input(mesh, v[k])) {
-      const HalfedgeHandle into = mesh.find_halfedge(v[(k + 2) % 3], v[k]), out = mesh.find_halfedge(v[k], v[(k + 1) % 3]);
-      if (into.is_valid() && out.is_valid() && is_constrained(mesh, mesh.edge_handle(into)) && is_constrained(mesh, mesh.edge_handle(out)))
-        m = bounds.margin_deg;
-    }
+    if (m < bounds.margin_deg && m >= -kAngleTolerance && fills_input_sector(mesh, v, k)) m = bounds.margin_deg;
     margin = std::min(margin, m);
   }
   return margin;

@@ -14,6 +14,12 @@ struct AngleBounds {
   double min_deg = 30.0;
   double max_deg = 90.0;
   double margin_deg = 1e-6;
+  /// >= 0: the one triangle filling an input sector narrower than 180 - 2 (max - margin) (whose
+  /// other two angles sum to at least 2 max less the margin: unsatisfiable) counts as
+  /// within the max bound while its largest angle is at most (180 - sector) / 2 + this. For a
+  /// repair's working bounds, so that it spends itself on what can be mended; a verdict on the
+  /// bounds asked for keeps the default, < 0 (off).
+  double unsatisfiable_apex_slack_deg = -1;
 };
 
 /// Angles (degrees) of triangle abc at a, b, c.
