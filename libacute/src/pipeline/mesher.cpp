@@ -314,12 +314,15 @@ MeshResult generate_mesh_once(const Domain& domain, const MeshOptions& options, 
       const RepairResult r = repair_acute(result.mesh, params);
       stalled = r.status == RepairStatus::IterationLimit;
       result.iterations += r.iterations;
-      result.status = r.status == RepairStatus::Converged && unsatisfiable.empty() ? MeshStatus::Ok : MeshStatus::BoundsNotMet;
-      // A converged repair left nothing bad (its last scan found none): no whole-mesh scan again.
-      if (result.status == MeshStatus::Ok) break;
+      result.status = r.status == RepairStatus::Converged ? MeshStatus::Ok : MeshStatus::BoundsNotMet;
+      // A converged repair left nothing bad (its last scan found none): no whole-mesh scan again,
+      // unless it worked to relaxed bounds.
+      if (result.status == MeshStatus::Ok && unsatisfiable.empty()) break;
       AngleBounds asked = params.bounds;
       asked.unsatisfiable_apex_slack_deg = -1;
-      for (auto fh : bad_triangles(result.mesh, asked)) {
+      const std::vector<FaceHandle> bad = bad_triangles(result.mesh, asked);
+      if (!bad.empty()) result.status = MeshStatus::BoundsNotMet;
+      for (auto fh : bad) {
         if (result.remaining.size() >= 100) break;
         BadTriangle t;
         t.corners = face_points(result.mesh, fh);
