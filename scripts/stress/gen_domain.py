@@ -293,18 +293,26 @@ def build(rng):
     return b
 
 
-def write_poly(path, b, seed):
+def write_poly_file(path, comments, points, segments, holes, vertex_markers=False):
+    """Writes a 1-based .poly: `comments` as leading `# ` lines, then the points (with a 0 marker
+    each when vertex_markers), the segments (marker 1) and the hole seeds. Shared with
+    scripts/zoo/gen_zoo.py."""
     with open(path, "w") as f:
-        f.write(f"# stress domain, seed {seed}: {', '.join(b.features)}\n")
-        f.write(f"{len(b.points)} 2 0 1\n")
-        for i, (x, y) in enumerate(b.points, 1):
-            f.write(f"{i} {x!r} {y!r} 0\n")
-        f.write(f"{len(b.segments)} 1\n")
-        for i, (u, v) in enumerate(b.segments, 1):
+        for c in comments:
+            f.write(f"# {c}\n")
+        f.write(f"{len(points)} 2 0 {1 if vertex_markers else 0}\n")
+        for i, (x, y) in enumerate(points, 1):
+            f.write(f"{i} {x!r} {y!r}{' 0' if vertex_markers else ''}\n")
+        f.write(f"{len(segments)} 1\n")
+        for i, (u, v) in enumerate(segments, 1):
             f.write(f"{i} {u + 1} {v + 1} 1\n")
-        f.write(f"{len(b.holes)}\n")
-        for i, (x, y) in enumerate(b.holes, 1):
+        f.write(f"{len(holes)}\n")
+        for i, (x, y) in enumerate(holes, 1):
             f.write(f"{i} {x!r} {y!r}\n")
+
+
+def write_poly(path, b, seed):
+    write_poly_file(path, [f"stress domain, seed {seed}: {', '.join(b.features)}"], b.points, b.segments, b.holes, vertex_markers=True)
 
 
 def generate(seed):
@@ -318,13 +326,18 @@ def generate(seed):
 
 
 def read_poly(path):
-    """Minimal .poly reader for --check (1-based or 0-based indices, no .node)."""
-    toks = []
+    """Minimal .poly reader (1-based or 0-based indices, no .node): points, segments and hole seeds
+    (0-based), and the hole loops given as `# hole K loop: i j ...` comments (gen_zoo.py writes
+    them; empty when there are none). Shared with scripts/zoo/gen_zoo.py."""
+    rows, loops = [], {}
     for line in open(path):
+        if line.startswith("# hole ") and " loop:" in line:
+            head, body = line[1:].split(":", 1)
+            loops[int(head.split()[1])] = [int(t) for t in body.split()]
         line = line.split("#")[0].split()
         if line:
-            toks.append(line)
-    it = iter(toks)
+            rows.append(line)
+    it = iter(rows)
     n = int(next(it)[0])
     pts, first = [], None
     for _ in range(n):
@@ -335,12 +348,13 @@ def read_poly(path):
     segs = [(int(r[1]) - first, int(r[2]) - first) for r in (next(it) for _ in range(m))]
     nh = int(next(it)[0])
     holes = [(float(r[1]), float(r[2])) for r in (next(it) for _ in range(nh))]
-    return pts, segs, holes
+    hole_loops = [[i - first for i in loops[k]] for k in sorted(loops)]
+    return pts, segs, holes, hole_loops
 
 
 def main():
     if len(sys.argv) == 3 and sys.argv[1] == "--check":
-        pts, segs, holes = read_poly(sys.argv[2])
+        pts, segs, holes, _ = read_poly(sys.argv[2])
         problem = check(pts, segs, [], [], allowed_on_segment=range(len(pts)))
         print(problem or "ok")
         sys.exit(1 if problem else 0)

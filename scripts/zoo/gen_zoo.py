@@ -26,7 +26,7 @@ import random
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "stress"))
-from gen_domain import check  # noqa: E402  (exact validity check, fractions)
+from gen_domain import check, read_poly, write_poly_file  # noqa: E402  (exact validity check, fractions; .poly files)
 
 
 class Domain:
@@ -488,45 +488,9 @@ def domains():
 # ---------------------------------------------------------------- files
 
 def write_poly(path, d):
-    with open(path, "w") as f:
-        f.write(f"# zoo domain {d.name}: {d.note}\n")
-        for h, loop in enumerate(d.hole_loops, 1):
-            f.write(f"# hole {h} loop: {' '.join(str(i + 1) for i in loop)}\n")
-        f.write(f"{len(d.points)} 2 0 0\n")
-        for i, (x, y) in enumerate(d.points, 1):
-            f.write(f"{i} {x!r} {y!r}\n")
-        f.write(f"{len(d.segments)} 1\n")
-        for i, (u, v) in enumerate(d.segments, 1):
-            f.write(f"{i} {u + 1} {v + 1} 1\n")
-        f.write(f"{len(d.holes)}\n")
-        for i, (x, y) in enumerate(d.holes, 1):
-            f.write(f"{i} {x!r} {y!r}\n")
-
-
-def read_poly(path):
-    """.poly reader (no .node): points, 0-based segments, holes, and the hole loops from the
-    `# hole K loop:` comments."""
-    rows, loops = [], {}
-    for line in open(path):
-        if line.startswith("# hole ") and " loop:" in line:
-            head, body = line[1:].split(":", 1)
-            loops[int(head.split()[1])] = [int(t) for t in body.split()]
-        line = line.split("#")[0].split()
-        if line:
-            rows.append(line)
-    it = iter(rows)
-    n = int(next(it)[0])
-    pts, first = [], None
-    for _ in range(n):
-        r = next(it)
-        first = int(r[0]) if first is None else first
-        pts.append((float(r[1]), float(r[2])))
-    m = int(next(it)[0])
-    segs = [(int(r[1]) - first, int(r[2]) - first) for r in (next(it) for _ in range(m))]
-    nh = int(next(it)[0])
-    holes = [(float(r[1]), float(r[2])) for r in (next(it) for _ in range(nh))]
-    hole_loops = [[i - first for i in loops[k]] for k in sorted(loops)]
-    return pts, segs, holes, hole_loops
+    comments = [f"zoo domain {d.name}: {d.note}"]
+    comments += [f"hole {h} loop: {' '.join(str(i + 1) for i in loop)}" for h, loop in enumerate(d.hole_loops, 1)]
+    write_poly_file(path, comments, d.points, d.segments, d.holes)
 
 
 def check_file(path):

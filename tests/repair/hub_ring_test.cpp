@@ -241,18 +241,38 @@ TEST(EqualiseStripApexes, the_apex_triangles_become_isosceles_and_their_wall_ver
   test::expect_commit_keeps_the_mesh(h.mesh, h.region, sub, h.area);
 }
 
+/// The CVT start of a domain with a corner at the origin, and the region copy of every vertex
+/// within `radius` of it (corners narrower than min_deg forced), as a cluster's search takes it.
+struct OriginRegion {
+  Mesh mesh;
+  detail::Region region;
+  Mesh sub;          ///< a working copy of region.sub
+  VertexHandle apex;  ///< the origin in sub (invalid when something failed)
+  double area = 0;
+};
+
+OriginRegion origin_region(const Domain& domain, std::size_t vertices, double radius, double min_deg = 30) {
+  OriginRegion o;
+  o.mesh = cvt_mesh(domain, vertices);
+  o.area = test::total_area(o.mesh);
+  const VertexHandle apex = vertex_at(o.mesh, Point2(0, 0));
+  EXPECT_TRUE(apex.is_valid());
+  if (!apex.is_valid()) return o;
+  const bool extracted = detail::extract_region(o.mesh, vertices_near(o.mesh, apex, radius), forced_corner_vertices(o.mesh, min_deg), o.region);
+  EXPECT_TRUE(extracted);
+  if (!extracted) return o;
+  o.sub = o.region.sub;
+  o.apex = vertex_at(o.sub, Point2(0, 0));
+  return o;
+}
+
 TEST(EqualiseStripApexes, outward_moves_the_nearer_wall_vertex_to_the_farther_radius) {
   // A 45-degree corner holds one triangle at its apex. Outward, the nearer of its walls' first
   // vertices is replaced by one at the farther's radius (inward, the farther would move in).
-  Mesh mesh = cvt_mesh(test::sharp_wedge(45), 400);
-  const double area = test::total_area(mesh);
-  const VertexHandle apex_big = vertex_at(mesh, Point2(0, 0));
-  ASSERT_TRUE(apex_big.is_valid());
-  detail::Region region;
-  ASSERT_TRUE(detail::extract_region(mesh, vertices_near(mesh, apex_big, 4.0), forced_corner_vertices(mesh, 30), region));
-  Mesh sub = region.sub;
-  const VertexHandle apex = vertex_at(sub, Point2(0, 0));
-  ASSERT_TRUE(apex.is_valid());
+  OriginRegion o = origin_region(test::sharp_wedge(45), 400, 4.0);
+  ASSERT_TRUE(o.apex.is_valid());
+  Mesh& sub = o.sub;
+  const VertexHandle apex = o.apex;
   auto first_radius_towards = [&](double deg) -> std::pair<HalfedgeHandle, double> {
     for (auto h : sub.voh_range(apex))
       if (is_constrained(sub, sub.edge_handle(h)) && point2(sub, sub.to_vertex_handle(h)).normalized().dot(polar(1, deg)) > 1 - 1e-9)
@@ -267,7 +287,7 @@ TEST(EqualiseStripApexes, outward_moves_the_nearer_wall_vertex_to_the_farther_ra
   ASSERT_TRUE(detail::equalise_strip_apexes(sub, apex, 2 * kStrip, /*outward=*/true));
   EXPECT_NEAR(first_radius_towards(0).second, r0, 1e-12 * r0) << "the farther stays";
   EXPECT_NEAR(first_radius_towards(45).second, r0, 1e-12 * r0) << "the nearer moved out to its radius";
-  test::expect_commit_keeps_the_mesh(mesh, region, sub, area);
+  test::expect_commit_keeps_the_mesh(o.mesh, o.region, sub, o.area);
 }
 
 TEST(ApexWithMiddlePoint, a_one_triangle_corner_between_interior_segments_gets_an_isosceles_apex_and_a_point_beyond) {
@@ -277,15 +297,10 @@ TEST(ApexWithMiddlePoint, a_one_triangle_corner_between_interior_segments_gets_a
   // not equalised, and the candidate declines: here the CVT start's are 0.87 and 1.74.)
   for (bool outward : {false, true}) {
     SCOPED_TRACE(outward);
-    Mesh mesh = cvt_mesh(test::wedge_between_segments(34), 400);
-    const double area = test::total_area(mesh);
-    const VertexHandle apex_big = vertex_at(mesh, Point2(0, 0));
-    ASSERT_TRUE(apex_big.is_valid());
-    detail::Region region;
-    ASSERT_TRUE(detail::extract_region(mesh, vertices_near(mesh, apex_big, 4.0), forced_corner_vertices(mesh, 30), region));
-    Mesh sub = region.sub;
-    const VertexHandle apex = vertex_at(sub, Point2(0, 0));
-    ASSERT_TRUE(apex.is_valid());
+    OriginRegion o = origin_region(test::wedge_between_segments(34), 400, 4.0);
+    ASSERT_TRUE(o.apex.is_valid());
+    Mesh& sub = o.sub;
+    const VertexHandle apex = o.apex;
     const std::size_t vertices_before = sub.n_vertices();
     if (!detail::apex_with_middle_point(sub, apex, kStrip, 2 * kStrip, outward)) {
       EXPECT_TRUE(outward) << "inward, the first radii are always equalised";
@@ -316,7 +331,7 @@ TEST(ApexWithMiddlePoint, a_one_triangle_corner_between_interior_segments_gets_a
     EXPECT_NEAR(std::atan2(q.y(), q.x()) * 180 / kPi, 17.0, 1e-9);
     EXPECT_GT(q.norm(), r);
     for (auto vh : base) EXPECT_TRUE(sub.find_halfedge(middle, vh).is_valid());
-    test::expect_commit_keeps_the_mesh(mesh, region, sub, area);
+    test::expect_commit_keeps_the_mesh(o.mesh, o.region, sub, o.area);
   }
 }
 
@@ -330,15 +345,10 @@ TEST(EqualiseStripApexes, strips_side_by_side_sharing_a_wall_all_end_isosceles) 
       Domain d = test::wedge_between_segments(10);
       d.points.push_back(polar(8, 22));
       d.segments.push_back({4, 7});
-      Mesh mesh = cvt_mesh(d, n);
-      const double area = test::total_area(mesh);
-      const VertexHandle apex_big = vertex_at(mesh, Point2(0, 0));
-      ASSERT_TRUE(apex_big.is_valid());
-      detail::Region region;
-      ASSERT_TRUE(detail::extract_region(mesh, vertices_near(mesh, apex_big, 3.0), forced_corner_vertices(mesh, strip_deg), region));
-      Mesh sub = region.sub;
-      const VertexHandle apex = vertex_at(sub, Point2(0, 0));
-      ASSERT_TRUE(apex.is_valid());
+      OriginRegion o = origin_region(d, n, 3.0, strip_deg);
+      ASSERT_TRUE(o.apex.is_valid());
+      Mesh& sub = o.sub;
+      const VertexHandle apex = o.apex;
       // The shared wall's first vertex made the far one of both strips (the other two walls cut at
       // 0.8 of its radius): each strip then removes it, and the second must not use the first's spokes.
       auto spoke_towards = [&](double deg) -> HalfedgeHandle {
@@ -367,7 +377,7 @@ TEST(EqualiseStripApexes, strips_side_by_side_sharing_a_wall_all_end_isosceles) 
         EXPECT_LT(std::max({a[0], a[1], a[2]}), 90);
       }
       EXPECT_EQ(strips, 2);
-      test::expect_commit_keeps_the_mesh(mesh, region, sub, area);
+      test::expect_commit_keeps_the_mesh(o.mesh, o.region, sub, o.area);
     }
   }
 }
