@@ -4,7 +4,7 @@
 
 namespace acute {
 
-std::size_t restore_delaunay(Mesh& mesh, std::vector<EdgeHandle>& queue) {
+std::size_t restore_delaunay(Mesh& mesh, std::vector<EdgeHandle>& queue, std::vector<VertexHandle>* touched) {
   std::size_t flips = 0;
   while (!queue.empty()) {
     const EdgeHandle eh = queue.back();
@@ -14,6 +14,11 @@ std::size_t restore_delaunay(Mesh& mesh, std::vector<EdgeHandle>& queue) {
     const auto h0 = mesh.halfedge_handle(eh, 0), h1 = mesh.halfedge_handle(eh, 1);
     mesh.flip(eh);
     ++flips;
+    if (touched)  // the new diagonal's ends, and the old one's (opposite it now)
+      for (auto h : {h0, h1}) {
+        touched->push_back(mesh.to_vertex_handle(h));
+        touched->push_back(mesh.to_vertex_handle(mesh.next_halfedge_handle(h)));
+      }
     // The four edges of the new quadrilateral may have become non-Delaunay.
     queue.push_back(mesh.edge_handle(mesh.next_halfedge_handle(h0)));
     queue.push_back(mesh.edge_handle(mesh.prev_halfedge_handle(h0)));

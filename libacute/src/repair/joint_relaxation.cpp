@@ -142,7 +142,7 @@ bool relax_jointly(Mesh& mesh, const std::vector<VertexHandle>& vertices, const 
     for (auto heh : mesh.voh_range(vh)) scale = std::min(scale, (point2(mesh, mesh.to_vertex_handle(heh)) - point2(mesh, vh)).norm());
   if (!(scale > 0) || !std::isfinite(scale)) return false;
 
-  std::vector<Point2> grad(n), start(n), trial(n);
+  std::vector<Point2> grad(n), trial_grad(n), start(n), trial(n);
   for (std::size_t i = 0; i < n; ++i) start[i] = point2(mesh, patch.movable[i]);
   std::vector<Point2> current = start;
   double energy = patch_energy(mesh, patch, bounds, params.tau_deg, &grad);
@@ -163,11 +163,12 @@ bool relax_jointly(Mesh& mesh, const std::vector<VertexHandle>& vertices, const 
         trial[i] = q;
         set_point2(mesh, patch.movable[i], q);
       }
-      std::vector<Point2>* no_grad = nullptr;
-      const double e = patch_valid(mesh, patch) ? patch_energy(mesh, patch, bounds, params.tau_deg, no_grad) : INFINITY;
+      // With its gradient: an accepted trial needs it next, and most trials are accepted.
+      const double e = patch_valid(mesh, patch) ? patch_energy(mesh, patch, bounds, params.tau_deg, &trial_grad) : INFINITY;
       if (e < energy * (1 - 1e-12)) {
-        current = trial;
-        energy = patch_energy(mesh, patch, bounds, params.tau_deg, &grad);
+        current.swap(trial);
+        grad.swap(trial_grad);
+        energy = e;
         step *= 1.5;
         accepted = moved = true;
         break;

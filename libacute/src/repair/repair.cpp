@@ -402,21 +402,32 @@ class Repairer {
   }
 
   /// Relocates the movable vertices of a region copy (a few sweeps, Delaunay restored after each move).
+  /// A vertex that did not move is skipped in later sweeps until its star changes (a neighbour
+  /// moved, or a flip changed it): relocation reads no more than the star, so it would stay again.
   void smooth_sub(Mesh& sub, const std::vector<bool>& forced, int sweeps) {
-    std::vector<EdgeHandle> queue;
+    std::vector<EdgeHandle>& queue = sub_queue_;
+    std::vector<VertexHandle>& touched = sub_touched_;
+    std::vector<char>& settled = sub_settled_;  // 1: did not move, star unchanged since
+    settled.assign(sub.n_vertices(), 0);
     std::size_t k = 0;
     for (int s = 0; s < sweeps; ++s) {
       bool moved = false;
       for (auto vh : sub.vertices()) {
         // A large region's sweeps outlast a short limit (the sanitizer build took 25 s under 2 s).
         if ((++k & 63) == 0 && out_of_time()) return;
-        if (sub.status(vh).deleted() || is_input(sub, vh)) continue;
-        if (relocate_for_angles(sub, vh, bounds_, forced)) {
-          moved = true;
-          queue.clear();
-          push_star_edges(sub, vh, queue);
-          restore_delaunay(sub, queue);
+        const auto i = static_cast<std::size_t>(vh.idx());
+        if (settled[i] || sub.status(vh).deleted() || is_input(sub, vh)) continue;
+        if (!relocate_for_angles(sub, vh, bounds_, forced)) {
+          settled[i] = 1;
+          continue;
         }
+        moved = true;
+        queue.clear();
+        touched.clear();
+        push_star_edges(sub, vh, queue);
+        restore_delaunay(sub, queue, &touched);
+        for (auto w : sub.vv_range(vh)) touched.push_back(w);
+        for (auto w : touched) settled[static_cast<std::size_t>(w.idx())] = 0;
       }
       if (!moved) break;
     }
@@ -791,6 +802,9 @@ class Repairer {
   std::vector<bool> forced_;
   std::vector<EdgeHandle> queue_;
   std::vector<char> seen_;  // grow()'s marks, all 0 between calls
+  std::vector<EdgeHandle> sub_queue_;      // smooth_sub's work lists, kept between calls
+  std::vector<VertexHandle> sub_touched_;
+  std::vector<char> sub_settled_;
   int candidate_ = 0;
   int best_candidate_ = 0;
   int best_kind_ = -1;

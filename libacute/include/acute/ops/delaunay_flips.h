@@ -10,7 +10,9 @@ namespace acute {
 
 /// Flips until every edge reachable from `queue` is locally Delaunay. The queue is consumed.
 /// Returns the number of flips. \post the edges of every face touched are locally Delaunay.
-std::size_t restore_delaunay(Mesh& mesh, std::vector<EdgeHandle>& queue);
+/// With `touched`, the four corners of every flipped quadrilateral are appended to it (the
+/// vertices whose stars the flips changed; with repeats).
+std::size_t restore_delaunay(Mesh& mesh, std::vector<EdgeHandle>& queue, std::vector<VertexHandle>* touched = nullptr);
 
 /// Lawson on the whole mesh. \post check_mesh(mesh, CheckLevel::Delaunay).ok() for a valid input.
 std::size_t make_delaunay(Mesh& mesh);
