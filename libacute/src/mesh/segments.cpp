@@ -60,25 +60,35 @@ bool grid_index(double x, double u, std::int64_t& out) {
   return true;
 }
 
-/// Inverse of a modulo m (gcd(a, m) == 1, m > 0), in [0, m).
-std::int64_t inverse_mod(std::int64_t a, std::int64_t m) {
-  i128 r0 = m, r1 = ((a % m) + m) % m, s0 = 0, s1 = 1;
-  while (r1 != 0) {
-    const i128 qt = r0 / r1;
-    const i128 r2 = r0 - qt * r1, s2 = s0 - qt * s1;
-    r0 = r1, r1 = r2, s0 = s1, s1 = s2;
-  }
-  return static_cast<std::int64_t>(((s0 % m) + m) % m);
+/// The least x >= 0 with (a x + b) mod m in [lo, hi], for 0 <= a, b < m and 0 <= lo <= hi < m; -1
+/// when there is none. Euclid's steps: where a x first passes lo without wrapping it is
+/// ceil(lo / a) unless that overshoots hi, and then the wraps y it needs are the same question
+/// modulo a (a multiple of a in [lo + m y, hi + m y]), so O(log m) rounds.
+std::int64_t first_hit(std::int64_t a, std::int64_t b, std::int64_t m, std::int64_t lo, std::int64_t hi) {
+  // (All operands below 2^62: 64-bit arithmetic but for m y, whose quotient by a is below m.)
+  if (lo <= b && b <= hi) return 0;
+  if (a == 0) return -1;
+  // (a x) mod m in [l, r]: the interval moved by -b, which does not wrap (it misses 0: b is outside).
+  const std::int64_t l = ((lo - b) % m + m) % m, r = ((hi - b) % m + m) % m;
+  const std::int64_t x = (l + a - 1) / a;
+  if (a * x <= r) return x;
+  // No multiple of a in [l, r], so r - l < a: a multiple lies in [l + m y, r + m y] exactly when
+  // (m y + r) mod a is in [0, r - l].
+  const std::int64_t y = first_hit(m % a, r % a, a, 0, r - l);
+  return y < 0 ? -1 : static_cast<std::int64_t>((static_cast<i128>(m) * y + l + a - 1) / a);
 }
 
 /// When both ends lie in one binade per axis, every double between them is a lattice point
 /// a + (m u_k, n u_j); its distance from the line is |m D_j - n D_k| u_k u_j / |ab| for the ends'
 /// integer offsets D. The lattice points with residue r = m D_j' - n D_k' (D' = D / gcd) recur
-/// every |D_k'| columns, so the nearest to the line inside the bracket are found residue by
-/// residue from 0 up, within 1/64 of the segment from q: nice slopes (exactly 1/2 on the grid)
-/// have exact points, others the best there.
+/// every |D_k'| columns, so the nearest to the line inside the bracket are found by residue,
+/// within 1/64 of the segment from q: nice slopes (exactly 1/2 on the grid) have exact points,
+/// others the best there. `most_exact_in_reach` is set when the point is what the walk of
+/// snap_to_line would find at best (its columns searched exactly), so the walk can be skipped.
 /// Returns false when the method does not apply or nothing within kMaxSegmentDeviation fits.
-bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, const Point2* lo, const Point2* hi, Point2& out) {
+bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, const Point2* lo, const Point2* hi, Point2& out,
+                  bool* most_exact_in_reach) {
+  if (most_exact_in_reach) *most_exact_in_reach = false;
   const auto& [a, b] = ends;
   const int j = 1 - k;
   if (a[k] == 0 || b[k] == 0 || a[j] == 0 || b[j] == 0) return false;
@@ -94,19 +104,18 @@ bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, con
   const double len2 = (b - a).squaredNorm();
   // Largest |r| whose deviation g |r| uk uj / len2 stays within kMaxSegmentDeviation.
   const double r_cap = std::floor(kMaxSegmentDeviation * len2 / (uk * uj * static_cast<double>(g)));
-  const std::int64_t r_max = static_cast<std::int64_t>(std::min(r_cap, 65536.0));
-  const std::int64_t inv = period == 1 ? 0 : inverse_mod(dj1, period);
   // Stay near q: within 1/64 of the segment (or kWindow columns), as the window search does.
   const i128 reach = std::max<i128>(kWindow, static_cast<i128>(dk < 0 ? -dk : dk) / 64);
   // Columns in reach, and strictly inside the bracket where it lies on the same grid (a split
   // near a corner: most columns in reach are outside the edge being split).
-  i128 m_lo = qk - reach, m_hi = qk + reach;
+  i128 m_lo_bracket = -(static_cast<i128>(1) << 100), m_hi_bracket = static_cast<i128>(1) << 100;
   std::int64_t il = 0, ih = 0;
   if (lo != nullptr && hi != nullptr && grid_index((*lo)[k], uk, il) && grid_index((*hi)[k], uk, ih)) {
     if (il > ih) std::swap(il, ih);
-    m_lo = std::max<i128>(m_lo, static_cast<i128>(il) - ak + 1);
-    m_hi = std::min<i128>(m_hi, static_cast<i128>(ih) - ak - 1);
+    m_lo_bracket = static_cast<i128>(il) - ak + 1;
+    m_hi_bracket = static_cast<i128>(ih) - ak - 1;
   }
+  const i128 m_lo = std::max<i128>(qk - reach, m_lo_bracket), m_hi = std::min<i128>(qk + reach, m_hi_bracket);
   if (m_lo > m_hi) return false;
   // The lattice point of column offset m (from a) whose line offset is res, if it qualifies.
   auto accept = [&](i128 m, std::int64_t res) {
@@ -171,27 +180,69 @@ bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, con
   if (try_columns(std::max<i128>(m_lo, static_cast<i128>(qk) - kWindow), std::min<i128>(m_hi, static_cast<i128>(qk) + kWindow),
                                static_cast<std::int64_t>(std::min(r_ok, 0x1p62))))
     return true;
-  // Fewer columns than line offsets to try: walk the columns, the nearest to the line first (the
-  // offset loop below took 65,536 rounds per failed snap: most of the fuzz_mesher timeout).
-  if (m_hi - m_lo + 1 < 2 * static_cast<i128>(r_max)) return try_columns(m_lo, m_hi, r_max);
-  // m dj1 == res (mod dk1): the columns m0 + t period, m0 = res inv mod period stepped by inv from
-  // residue to residue, and the one nearest q is q plus the centred difference of m0 and q's class
-  // (a 128-bit division and a rounding per residue were most of a far-translated domain's time).
-  const std::int64_t q_class = period == 1 ? 0 : static_cast<std::int64_t>(((static_cast<i128>(qk) % period) + period) % period);
-  std::int64_t m0_pos = 0;  // r inv mod period, in [0, period)
-  for (std::int64_t r = 0; r <= r_max; ++r) {
-    for (const std::int64_t res : {r, -r}) {
-      if (r == 0 && res != r) continue;
-      const std::int64_t m0 = res >= 0 || m0_pos == 0 ? m0_pos : period - m0_pos;
-      std::int64_t d = m0 - q_class;  // in (-period, period); centred into (-period / 2, period / 2]
-      if (d > period - d) d -= period;
-      else if (-d >= period + d) d += period;
-      const i128 nearest = static_cast<i128>(qk) + d;
-      for (const std::int64_t dt : {0, -1, 1})
-        if (accept(nearest + static_cast<i128>(dt) * period, res)) return true;
+  // Beyond the first window, as the walk in snap_to_line would go but exactly: the column nearest
+  // q within kMaxWindow whose point is within kAcceptable, else the most exact of those columns,
+  // else the most exact of the whole reach (anything within kMaxSegmentDeviation), each nearest q
+  // among equals. Column m's line offset is (m dj1) mod period, centred; the columns with
+  // |offset| <= t, read from a start column outwards, are the first hits of two intervals
+  // (first_hit), so the least t a span attains takes a binary search of O(log) steps. (A scan of
+  // offsets 0, 1, 2, ... gave up at 65,536 and left it to the walk: on a slope near a small
+  // fraction, 13 / 8 at (1e6, -3e6), the offsets drift by a few every 8 columns, the near ones lie
+  // millions of columns away, and every such snap walked 4,096 columns.)
+  const i128 P = period, A = ((static_cast<i128>(dj1) % P) + P) % P;
+  auto offset0 = [&](i128 m) { return (((m % P) + P) % P) * A % P; };  // in [0, P)
+  // Columns from `start` on (or back) to the first with |offset| <= t: their count, -1 for none.
+  auto distance_to_hit = [&](i128 start, bool forward, i128 t) -> i128 {
+    if (2 * t + 1 >= P) return 0;
+    const auto p = static_cast<std::int64_t>(P), tt = static_cast<std::int64_t>(t);
+    const auto step = static_cast<std::int64_t>(forward ? A : (P - A) % P), b0 = static_cast<std::int64_t>(offset0(start));
+    i128 x = first_hit(step, b0, p, 0, tt);
+    if (t > 0) {
+      const i128 y = first_hit(step, b0, p, p - tt, p - 1);
+      if (y >= 0 && (x < 0 || y < x)) x = y;
     }
-    m0_pos += inv;  // both below period < 2^62: no overflow
-    if (m0_pos >= period) m0_pos -= period;
+    return x;
+  };
+  auto attains = [&](i128 c_lo, i128 c_hi, i128 t) {
+    const i128 x = distance_to_hit(c_lo, true, t);
+    return x >= 0 && x <= c_hi - c_lo;
+  };
+  const i128 t_cap = std::min<i128>(P / 2, static_cast<i128>(std::min(r_cap, 0x1p62)));
+  // The least t <= t_cap some column of [c_lo, c_hi] attains; -1 for none.
+  auto least_offset = [&](i128 c_lo, i128 c_hi) -> i128 {
+    if (c_lo > c_hi || !attains(c_lo, c_hi, t_cap)) return -1;
+    i128 t_lo = -1, t_hi = t_cap;  // attains(t_lo) false, attains(t_hi) true
+    while (t_hi - t_lo > 1) {
+      const i128 mid = t_lo + (t_hi - t_lo) / 2;
+      (attains(c_lo, c_hi, mid) ? t_hi : t_lo) = mid;
+    }
+    return t_hi;
+  };
+  // The columns of [c_lo, c_hi] nearest q on either side with |offset| <= t, the nearer first
+  // (ties: the left), offered to accept.
+  auto nearest_within = [&](i128 c_lo, i128 c_hi, i128 t) {
+    if (t < 0 || c_lo > c_hi) return false;
+    const i128 from_right = std::max<i128>(qk, c_lo), from_left = std::min<i128>(qk, c_hi);
+    const i128 xr = distance_to_hit(from_right, true, t), xl = distance_to_hit(from_left, false, t);
+    i128 columns[2];
+    int n = 0;
+    if (xl >= 0 && from_left - xl >= c_lo) columns[n++] = from_left - xl;
+    if (xr >= 0 && from_right + xr <= c_hi) columns[n++] = from_right + xr;
+    if (n == 2 && columns[1] - qk < qk - columns[0]) std::swap(columns[0], columns[1]);
+    for (int c = 0; c < n; ++c) {
+      const i128 r0 = offset0(columns[c]);
+      if (accept(columns[c], static_cast<std::int64_t>(2 * r0 > P ? r0 - P : r0))) return true;
+    }
+    return false;
+  };
+  // The walk's columns: kMaxWindow on either side of q, strictly inside the bracket and the segment.
+  const i128 w_lo = std::max<i128>({qk - kMaxWindow, m_lo_bracket, std::min<i128>(0, dk) + 1});
+  const i128 w_hi = std::min<i128>({qk + kMaxWindow, m_hi_bracket, std::max<i128>(0, dk) - 1});
+  const auto t_ok = static_cast<i128>(std::min(r_ok, 0x1p62));
+  if (nearest_within(w_lo, w_hi, std::min(t_ok, t_cap)) || nearest_within(w_lo, w_hi, least_offset(w_lo, w_hi)) ||
+      nearest_within(m_lo, m_hi, least_offset(m_lo, m_hi))) {
+    if (most_exact_in_reach) *most_exact_in_reach = true;
+    return true;
   }
   return false;
 }
@@ -326,10 +377,11 @@ Point2 snap_to_line(const std::array<Point2, 2>& ends, const Point2& q, const Po
   const int k = std::fabs(d.x()) >= std::fabs(d.y()) ? 0 : 1, j = 1 - k;
 #ifdef __SIZEOF_INT128__
   Point2 lattice;
-  if (lattice_snap(ends, q, k, lo, hi, lattice)) {
+  bool most_exact = false;  // nothing in the walk's columns is nearer the line
+  if (lattice_snap(ends, q, k, lo, hi, lattice, &most_exact)) {
     const double dev = line_deviation(ends, lattice);
     if (dev < best_dev) best = lattice, best_dev = dev;
-    if (best_dev <= kAcceptable) return best;
+    if (best_dev <= kAcceptable || most_exact) return best;
   }
 #endif
   // Walk the dominant axis ulp by ulp; in each column the doubles nearest the exact line are the
