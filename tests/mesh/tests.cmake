@@ -4,6 +4,7 @@ acute_add_test(mesh_tests
     mesh/check_test.cpp
     mesh/quality_test.cpp
     mesh/segments_test.cpp
+    mesh/modular_search_test.cpp
     mesh/sectors_test.cpp
     mesh/geometry_test.cpp
   LIBS acute_mesh)

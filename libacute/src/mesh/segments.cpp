@@ -2,6 +2,8 @@
 
 #include <acute/predicates/predicates.h>
 
+#include "mesh/modular_search.h"
+
 #include <OpenMesh/Core/Utils/Property.hh>
 
 #include <algorithm>
@@ -58,24 +60,6 @@ bool grid_index(double x, double u, std::int64_t& out) {
   if (!(std::fabs(t) < 0x1p62) || t != std::floor(t)) return false;
   out = static_cast<std::int64_t>(t);
   return true;
-}
-
-/// The least x >= 0 with (a x + b) mod m in [lo, hi], for 0 <= a, b < m and 0 <= lo <= hi < m; -1
-/// when there is none. Euclid's steps: where a x first passes lo without wrapping it is
-/// ceil(lo / a) unless that overshoots hi, and then the wraps y it needs are the same question
-/// modulo a (a multiple of a in [lo + m y, hi + m y]), so O(log m) rounds.
-std::int64_t first_hit(std::int64_t a, std::int64_t b, std::int64_t m, std::int64_t lo, std::int64_t hi) {
-  // (All operands below 2^62: 64-bit arithmetic but for m y, whose quotient by a is below m.)
-  if (lo <= b && b <= hi) return 0;
-  if (a == 0) return -1;
-  // (a x) mod m in [l, r]: the interval moved by -b, which does not wrap (it misses 0: b is outside).
-  const std::int64_t l = ((lo - b) % m + m) % m, r = ((hi - b) % m + m) % m;
-  const std::int64_t x = (l + a - 1) / a;
-  if (a * x <= r) return x;
-  // No multiple of a in [l, r], so r - l < a: a multiple lies in [l + m y, r + m y] exactly when
-  // (m y + r) mod a is in [0, r - l].
-  const std::int64_t y = first_hit(m % a, r % a, a, 0, r - l);
-  return y < 0 ? -1 : static_cast<std::int64_t>((static_cast<i128>(m) * y + l + a - 1) / a);
 }
 
 /// When both ends lie in one binade per axis, every double between them is a lattice point
@@ -185,7 +169,7 @@ bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, con
   // else the most exact of the whole reach (anything within kMaxSegmentDeviation), each nearest q
   // among equals. Column m's line offset is (m dj1) mod period, centred; the columns with
   // |offset| <= t, read from a start column outwards, are the first hits of two intervals
-  // (first_hit), so the least t a span attains takes a binary search of O(log) steps. (A scan of
+  // (detail::first_hit), so the least t a span attains takes a binary search of O(log) steps. (A scan of
   // offsets 0, 1, 2, ... gave up at 65,536 and left it to the walk: on a slope near a small
   // fraction, 13 / 8 at (1e6, -3e6), the offsets drift by a few every 8 columns, the near ones lie
   // millions of columns away, and every such snap walked 4,096 columns.)
@@ -196,9 +180,9 @@ bool lattice_snap(const std::array<Point2, 2>& ends, const Point2& q, int k, con
     if (2 * t + 1 >= P) return 0;
     const auto p = static_cast<std::int64_t>(P), tt = static_cast<std::int64_t>(t);
     const auto step = static_cast<std::int64_t>(forward ? A : (P - A) % P), b0 = static_cast<std::int64_t>(offset0(start));
-    i128 x = first_hit(step, b0, p, 0, tt);
+    i128 x = detail::first_hit(step, b0, p, 0, tt);
     if (t > 0) {
-      const i128 y = first_hit(step, b0, p, p - tt, p - 1);
+      const i128 y = detail::first_hit(step, b0, p, p - tt, p - 1);
       if (y >= 0 && (x < 0 || y < x)) x = y;
     }
     return x;
