@@ -76,6 +76,32 @@ TEST(SiteDelaunay, sites_sliding_along_a_slanted_hull_segment_keep_a_valid_trian
   EXPECT_EQ(dt.rebuilds(), 1u);
 }
 
+// Two long straight rows of sites (the walls of a strip, every site on the hull): the frame
+// vertices then neighbour tens of thousands of sites. The triangulation is valid and each triangle's
+// neighbour across an edge holds that edge (the adjacency search looked through the frame vertex's
+// whole list for every hull edge: quadratic, minutes at this size).
+TEST(SiteDelaunay, long_straight_hull_rows_link_every_edge_to_its_twin) {
+  std::vector<Point2> points;
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) points.emplace_back(5.0, 2.0 + 6.0 * i / n);
+  for (int i = 0; i < n; ++i) points.emplace_back(5.00001, 2.0 + 6.0 * (i + 0.5) / n);
+  detail::SiteDelaunay dt;
+  dt.update(points, false);
+  expect_locally_delaunay_triangulation(dt, points);
+  const auto& tri = dt.triangles();
+  for (std::size_t t = 0; t < tri.size(); ++t)
+    for (int i = 0; i < 3; ++i) {
+      const int u = dt.across(static_cast<int>(t), i);
+      if (u < 0) continue;
+      const auto& w = tri[static_cast<std::size_t>(u)];
+      const int a = tri[t][(i + 1) % 3], b = tri[t][(i + 2) % 3];
+      int j = 0;
+      while (j < 3 && w[j] != b) ++j;
+      ASSERT_LT(j, 3) << "triangle " << t;
+      ASSERT_EQ(w[(j + 1) % 3], a) << "triangle " << t;
+    }
+}
+
 /// A constrained Delaunay mesh of the wedge with a hole and random interior points: its sites (in
 /// vertex order) and its faces and border as a seed.
 struct SeededWedge {

@@ -172,13 +172,19 @@ void SiteDelaunay::link_neighbours() {
   for (std::size_t t = 0; t < tri_.size(); ++t)
     for (int i = 0; i < 3; ++i) {
       const int a = tri_[t][static_cast<std::size_t>((i + 1) % 3)], b = tri_[t][static_cast<std::size_t>((i + 2) % 3)];
-      // The twin holds b -> a.
-      for (int k = incident_start_[static_cast<std::size_t>(b)]; k < incident_start_[static_cast<std::size_t>(b) + 1]; ++k) {
+      // The twin holds b -> a: it is among the triangles of both ends, so the shorter list is
+      // searched (a frame vertex has every hull site as a neighbour: a long straight wall's
+      // hundred thousand sites made the longer list's scans quadratic).
+      const auto deg = [&](int v) { return incident_start_[static_cast<std::size_t>(v) + 1] - incident_start_[static_cast<std::size_t>(v)]; };
+      const int via = deg(a) < deg(b) ? a : b;
+      for (int k = incident_start_[static_cast<std::size_t>(via)]; k < incident_start_[static_cast<std::size_t>(via) + 1]; ++k) {
         const int u = incident_[static_cast<std::size_t>(k)];
         const auto& tu = tri_[static_cast<std::size_t>(u)];
         int j = 0;
-        while (tu[static_cast<std::size_t>(j)] != b) ++j;
-        if (tu[static_cast<std::size_t>((j + 1) % 3)] == a) {
+        while (tu[static_cast<std::size_t>(j)] != b) {
+          if (++j == 3) break;  // (searching a's list: u need not hold b)
+        }
+        if (j < 3 && tu[static_cast<std::size_t>((j + 1) % 3)] == a) {
           nbr_[t][static_cast<std::size_t>(i)] = u;
           break;
         }
