@@ -30,52 +30,6 @@ TEST(SnapToLine, points_of_a_tiny_segment_far_from_origin_stay_within_1e_10_of_i
   EXPECT_LT(worst_snapped, 1e-10);
 }
 
-// Far from the origin (UTM-like coordinates) no double lies within 2^-42 of a short segment's
-// length from it, so every snap searches: the lattice search by residues and the window walk. Where
-// brute force finds a double within kMaxSegmentDeviation among the 3 nearest the line in each of
-// the 128 columns on either side of the request, the snap finds one too, inside the bracket.
-TEST(SnapToLine, far_from_the_origin_finds_a_near_double_wherever_brute_force_does) {
-  std::uint64_t state = 12345;
-  auto uniform = [&] {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return static_cast<double>(state >> 11) * 0x1p-53;
-  };
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  int found = 0, near = 0;
-  for (int trial = 0; trial < 60; ++trial) {
-    const Point2 a(1e6 + 1000 * uniform(), -3e6 + 1000 * uniform());
-    const double length = std::pow(10.0, -2 + 2 * uniform()), angle = 6.283185307179586 * uniform();
-    const Point2 b = a + length * Point2(std::cos(angle), std::sin(angle));
-    const std::array<Point2, 2> ends{a, b};
-    const Point2 lo = a + 0.25 * (b - a), hi = a + 0.75 * (b - a);
-    const Point2 q = a + uniform() * (b - a);
-    const Point2 s = snap_to_line(ends, q, &lo, &hi);
-    // Brute force over the columns of the dominant axis.
-    const int k = std::fabs(b.x() - a.x()) >= std::fabs(b.y() - a.y()) ? 0 : 1, j = 1 - k;
-    bool exists = false;
-    double up = q[k], down = q[k];
-    for (int step = 0; step < 128 && !exists; ++step) {
-      up = std::nextafter(up, inf), down = std::nextafter(down, -inf);
-      for (const double xk : {up, down}) {
-        const double yj = a[j] + (xk - a[k]) * ((b[j] - a[j]) / (b[k] - a[k]));
-        for (const double y : {std::nextafter(yj, -inf), yj, std::nextafter(yj, inf)}) {
-          Point2 c;
-          c[k] = xk, c[j] = y;
-          exists = exists || (strictly_between_along(ends, lo, c, hi) && line_deviation(ends, c) <= kMaxSegmentDeviation);
-        }
-      }
-    }
-    const bool ok = strictly_between_along(ends, lo, s, hi) && close_enough_to_line(ends, s);
-    near += exists;
-    found += ok;
-    if (exists) {
-      EXPECT_TRUE(ok) << "trial " << trial;
-    }
-  }
-  EXPECT_GT(near, 0);
-  EXPECT_GE(found, near);
-}
-
 // The most exact of the 3 doubles nearest the line in each of the `columns` columns on either side
 // of q along the dominant axis, inside the bracket (brute force).
 double brute_force_best_deviation(const std::array<Point2, 2>& ends, const Point2& q, const Point2& lo, const Point2& hi, int columns) {
@@ -95,6 +49,37 @@ double brute_force_best_deviation(const std::array<Point2, 2>& ends, const Point
     }
   }
   return best;
+}
+
+// Far from the origin (UTM-like coordinates) no double lies within 2^-42 of a short segment's
+// length from it, so every snap searches: the lattice search by residues and the window walk. Where
+// brute force finds a double within kMaxSegmentDeviation among the 3 nearest the line in each of
+// the 128 columns on either side of the request, the snap finds one too, inside the bracket.
+TEST(SnapToLine, far_from_the_origin_finds_a_near_double_wherever_brute_force_does) {
+  std::uint64_t state = 12345;
+  auto uniform = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1p-53;
+  };
+  int found = 0, near = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const Point2 a(1e6 + 1000 * uniform(), -3e6 + 1000 * uniform());
+    const double length = std::pow(10.0, -2 + 2 * uniform()), angle = 6.283185307179586 * uniform();
+    const Point2 b = a + length * Point2(std::cos(angle), std::sin(angle));
+    const std::array<Point2, 2> ends{a, b};
+    const Point2 lo = a + 0.25 * (b - a), hi = a + 0.75 * (b - a);
+    const Point2 q = a + uniform() * (b - a);
+    const Point2 s = snap_to_line(ends, q, &lo, &hi);
+    const bool exists = brute_force_best_deviation(ends, q, lo, hi, 128) <= kMaxSegmentDeviation;
+    const bool ok = strictly_between_along(ends, lo, s, hi) && close_enough_to_line(ends, s);
+    near += exists;
+    found += ok;
+    if (exists) {
+      EXPECT_TRUE(ok) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(near, 0);
+  EXPECT_GE(found, near);
 }
 
 // A slope near a small fraction (13 / 8 in grid units, a side of A.poly moved to (1e6, -3e6)): the
