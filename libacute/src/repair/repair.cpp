@@ -405,7 +405,7 @@ class Repairer {
   /// A vertex that did not move is skipped in later sweeps until its star changes (a neighbour
   /// moved, or a flip changed it): relocation reads no more than the star, so it would stay again.
   void smooth_sub(Mesh& sub, const std::vector<bool>& forced, int sweeps) {
-    std::vector<EdgeHandle>& queue = sub_queue_;
+    std::vector<EdgeHandle>& queue = queue_;  // (restore_around's too: never in use at once)
     std::vector<VertexHandle>& touched = sub_touched_;
     std::vector<char>& settled = sub_settled_;  // 1: did not move, star unchanged since
     settled.assign(sub.n_vertices(), 0);
@@ -802,8 +802,7 @@ class Repairer {
   std::vector<bool> forced_;
   std::vector<EdgeHandle> queue_;
   std::vector<char> seen_;  // grow()'s marks, all 0 between calls
-  std::vector<EdgeHandle> sub_queue_;      // smooth_sub's work lists, kept between calls
-  std::vector<VertexHandle> sub_touched_;
+  std::vector<VertexHandle> sub_touched_;  // smooth_sub's work lists, kept between calls
   std::vector<char> sub_settled_;
   int candidate_ = 0;
   int best_candidate_ = 0;
