@@ -127,6 +127,27 @@ constexpr unsigned kRestartSeedStep = 7919;
 /// 34-degree corner with three seeds, and met the bounds in 1-4 s at 0.95 and 0.9 of the size).
 constexpr double kRestartSizeScale = 0.95;
 
+std::string format_number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", x);
+  return buf;
+}
+
+/// The size gradation the acute method follows at most. The field's slope (gradation - 1) is how
+/// much an edge may grow per unit of distance from a feature; with every angle at least 30 degrees
+/// an edge can be at most about twice its distance to a vertex it does not touch (its triangles'
+/// empty circumdisks), and the CVT start cannot follow a slope near that: at --gradation 3
+/// (slope 2) Constrained_Sweden at ~2k started with 5,733 of its 6,280 triangles bad.
+constexpr double kMaxAcuteGradation = 2.0;
+/// Restart k also halves k times the gradation's excess over the default, never below the
+/// default: a steep gradation's plateaus come from where sizes change fast (square_with_crack at
+/// --gradation 1.7-2: three small triangles at a wall corner between edges three times longer).
+constexpr double kDefaultGradation = 1.3;
+double restart_gradation(double gradation, int k) {
+  if (gradation <= kDefaultGradation) return gradation;
+  return std::max(kDefaultGradation, 1.0 + (gradation - 1.0) * std::pow(0.5, k));
+}
+
 /// A run that a restart may follow stops after this many iterations without a new best
 /// (RepairParams::stagnation_limit_before_restart); the last one keeps the repair's default.
 constexpr int kStagnationBeforeRestart = 50;
@@ -144,7 +165,14 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
   check_options(options);
   const auto start = std::chrono::steady_clock::now();
   bool stalled = false;
-  MeshResult best = generate_mesh_once(domain, options, stalled, 1.0, options.restarts > 0);
+  MeshOptions first = options;
+  std::string capped;
+  if (options.method == Method::Acute && options.gradation > kMaxAcuteGradation) {
+    first.gradation = kMaxAcuteGradation;
+    capped = "gradation " + format_number(options.gradation) + " is steeper than an acute mesh can grade: " + format_number(kMaxAcuteGradation) + " used";
+  }
+  MeshResult best = generate_mesh_once(domain, first, stalled, 1.0, options.restarts > 0);
+  if (!capped.empty()) best.notes.insert(best.notes.begin(), capped);
   // The repair's search is local: on some domains one seed's start leads it into a plateau (a
   // few triangles that no edit improves) that another seed's start avoids. A run that stalls
   // with a few bad triangles is restarted from another seed, within what is left of the time
@@ -155,8 +183,9 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
       break;
     // (Asked only here: it measures every input corner again, which most runs need not.)
     if (k == 1 && !unsatisfiable_note(domain, options).empty()) break;
-    MeshOptions again = options;
+    MeshOptions again = first;
     again.seed = options.seed + static_cast<unsigned>(k) * kRestartSeedStep;
+    again.gradation = restart_gradation(first.gradation, k);
     if (options.time_limit_s > 0) {
       again.time_limit_s = options.time_limit_s - seconds_since(start);
       if (again.time_limit_s < 0.25 * options.time_limit_s) break;
@@ -165,7 +194,8 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
     MeshResult r = generate_mesh_once(domain, again, stalled, size_scale, k < options.restarts);
     const long finer_percent = std::lround(100 * (1 - size_scale));
     const std::string what = "the repair stalled with " + std::to_string(best.remaining.size()) + " bad triangle(s); restarted with seed " +
-                             std::to_string(again.seed) + " and a " + std::to_string(finer_percent) + "% finer size: " +
+                             std::to_string(again.seed) + " and a " + std::to_string(finer_percent) + "% finer size" +
+                             (again.gradation < first.gradation ? " graded at " + format_number(again.gradation) : std::string()) + ": " +
                              (r.status == MeshStatus::Ok ? "bounds met" : std::to_string(r.remaining.size()) + " left");
     if (r.status == MeshStatus::Ok || r.remaining.size() < best.remaining.size()) {
       r.iterations += best.iterations;
