@@ -160,7 +160,7 @@ void add_mesh_command(CLI::App& app, const GlobalOptions& global, int& exit_code
   cmd->add_option("--max-angle", args->options.max_angle_deg, "Angles must be strictly below this (degrees)")->capture_default_str();
   auto* size = cmd->add_option("--size", args->options.size, "Largest edge length (finer where the domain's features need it; uniform with --method cvt or refine)");
   cmd->add_option("--vertices", args->options.target_vertices, "Target vertex count (small features that need more get more; under --time-limit T at most the larger of 16 times it and 1,000 T)")->excludes(size);
-  cmd->add_option("--gradation", args->options.gradation, "Size gradation factor: how fast sizes may grow away from features (the acute method follows at most 2)")->capture_default_str();
+  cmd->add_option("--gradation", args->options.gradation, "Size gradation factor: how fast sizes may grow away from features (the acute method follows at most 1.5)")->capture_default_str();
   cmd->add_option("--max-size", args->options.max_size, "Largest edge length of the graded size field (default: a fraction of the domain's diameter)")
       ->excludes(size);
   cmd->add_option("--seed", args->options.seed, "Random seed (deterministic output)")->capture_default_str();

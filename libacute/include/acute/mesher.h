@@ -39,8 +39,8 @@ struct MeshOptions {
   double size = 0;              ///< target edge length (0: graded from the local feature size)
   std::size_t target_vertices = 0;
   /// How fast sizes may grow away from features (the field's slope is gradation - 1). The acute
-  /// method follows at most 2 (a note says when it capped it), and its restarts grade more gently,
-  /// down to 1.3.
+  /// method follows at most 1.5 (a note says when it capped it), and its restarts grade more
+  /// gently, down to 1.3.
   double gradation = 1.3;
   /// > 0: the graded field's largest edge length (default: kDefaultMaxSizeRatio * the diameter)
   double max_size = 0;

@@ -60,11 +60,21 @@ class CachedStar {
     }
   }
 
-  /// The soft minimum of the star's angle margins with the vertex at p (where the mesh has it too:
-  /// forced corners read their sector from it): every angle near or beyond a bound pushes, the
-  /// worst most. (A plain max-min stalls when the worst angle cannot change, e.g. at a fixed input
-  /// corner.) With `gradient`, also its gradient with respect to p.
-  double energy(const Mesh& mesh, const Point2& p, const AngleBounds& bounds, const std::vector<bool>& forced, Point2* gradient = nullptr) const {
+  /// Reads which corners the min bound applies to: an exempt corner's input sector is narrower
+  /// than the min, and that does not change as the vertex moves. Before energy().
+  void load_min_exemptions(const Mesh& mesh, double min_deg, const std::vector<bool>& forced) {
+    for (int i = 0; i < n_; ++i) {
+      Face& f = i < kInline ? faces_[i] : overflow_[static_cast<std::size_t>(i - kInline)];
+      const bool forced_corner[3] = {forced0_, f.forced1, f.forced2};
+      const VertexHandle corner[3] = {vh_, f.v1, f.v2};
+      for (int k = 0; k < 3; ++k) f.min_applies[k] = !(forced_corner[k] && min_exempt_corner(mesh, corner[k], f.fh, min_deg, forced));
+    }
+  }
+
+  /// The soft minimum of the star's angle margins with the vertex at p: every angle near or beyond
+  /// a bound pushes, the worst most. (A plain max-min stalls when the worst angle cannot change,
+  /// e.g. at a fixed input corner.) With `gradient`, also its gradient with respect to p.
+  double energy(const Point2& p, const AngleBounds& bounds, Point2* gradient = nullptr) const {
     constexpr double kTau = 2.0;  // degrees
     constexpr double kDeg = 57.29577951308232;
     double energy = 0;
@@ -74,13 +84,10 @@ class CachedStar {
       // The angles at p1 and p2; the one at p is what is left of 180 degrees.
       const double a1 = approx_angle_deg(f.p1, f.p2, p), a2 = approx_angle_deg(f.p2, p, f.p1);
       const double angles[3] = {180.0 - a1 - a2, a1, a2};
-      const bool forced_corner[3] = {forced0_, f.forced1, f.forced2};
-      const VertexHandle corner[3] = {vh_, f.v1, f.v2};
       double slope[3];  // d energy / d angle
       for (int k = 0; k < 3; ++k) {
         const double to_max = bounds.max_deg - angles[k];
-        const bool min_applies = !(forced_corner[k] && min_exempt_corner(mesh, corner[k], f.fh, bounds.min_deg, forced));
-        const bool min_binds = min_applies && angles[k] - bounds.min_deg < to_max;
+        const bool min_binds = f.min_applies[k] && angles[k] - bounds.min_deg < to_max;
         const double e = std::exp(-(min_binds ? angles[k] - bounds.min_deg : to_max) / kTau);
         energy += e;
         slope[k] = min_binds ? -e / kTau : e / kTau;
@@ -129,6 +136,7 @@ class CachedStar {
     VertexHandle v1, v2;
     Point2 p1, p2;
     bool forced1, forced2;
+    bool min_applies[3];  ///< at the vertex, v1 and v2 (load_min_exemptions)
   };
   /// Stars up to kInline faces (all but rare hubs) live in the object: no allocation per move.
   static constexpr int kInline = 32;
@@ -157,7 +165,8 @@ double star_margin(const Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
 double star_energy(const Mesh& mesh, VertexHandle vh, const AngleBounds& bounds, const std::vector<bool>& forced) {
   CachedStar star;
   star.load(mesh, vh, forced);
-  return star.energy(mesh, point2(mesh, vh), bounds, forced);
+  star.load_min_exemptions(mesh, bounds.min_deg, forced);
+  return star.energy(point2(mesh, vh), bounds);
 }
 
 bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds, const std::vector<bool>& forced) {
@@ -200,7 +209,8 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
   auto place = [&](const Point2& p) { return on_segment ? project_on_line(ends, p) : p; };
 
   Point2 gradient(0, 0), trial_gradient(0, 0);
-  const double base = star.energy(mesh, start, bounds, forced, &gradient);
+  star.load_min_exemptions(mesh, bounds.min_deg, forced);
+  const double base = star.energy(start, bounds, &gradient);
   double best = base;
   Point2 best_p = start;
   // Evaluates a candidate (exactly valid stars only) and keeps it, with its gradient, when better.
@@ -208,7 +218,7 @@ bool relocate_for_angles(Mesh& mesh, VertexHandle vh, const AngleBounds& bounds,
     const Point2 p = place(q);
     if (p == best_p || !star.can_move_to(mesh, p)) return false;
     set_point2(mesh, vh, p);
-    const double m = star.energy(mesh, p, bounds, forced, &trial_gradient);
+    const double m = star.energy(p, bounds, &trial_gradient);
     const bool better = m < best * (1 - 1e-12) && (!keep_good || star.margin(mesh, bounds) >= 0);
     set_point2(mesh, vh, best_p);
     if (better) {
