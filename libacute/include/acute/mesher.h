@@ -32,6 +32,9 @@ struct MeshProgress {
   const char* step = "";   ///< CVT: "lloyd" or "lbfgs"
 };
 
+/// MeshOptions::gradation's default, and the gentlest that an acute method's restart goes to.
+constexpr double kDefaultGradation = 1.3;
+
 struct MeshOptions {
   Method method = Method::Acute;
   double min_angle_deg = 30.0;
@@ -40,8 +43,8 @@ struct MeshOptions {
   std::size_t target_vertices = 0;
   /// How fast sizes may grow away from features (the field's slope is gradation - 1). The acute
   /// method follows at most 1.5 (a note says when it capped it), and its restarts grade more
-  /// gently, down to 1.3.
-  double gradation = 1.3;
+  /// gently, down to the default.
+  double gradation = kDefaultGradation;
   /// > 0: the graded field's largest edge length (default: kDefaultMaxSizeRatio * the diameter)
   double max_size = 0;
   /// When set: a position-dependent largest edge length for the graded field (CvtParams::size_cap)

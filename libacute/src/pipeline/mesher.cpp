@@ -127,6 +127,7 @@ constexpr unsigned kRestartSeedStep = 7919;
 /// 34-degree corner with three seeds, and met the bounds in 1-4 s at 0.95 and 0.9 of the size).
 constexpr double kRestartSizeScale = 0.95;
 
+/// A number in a note: 1.5, 3, 1.35.
 std::string format_number(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", x);
@@ -134,16 +135,17 @@ std::string format_number(double x) {
 }
 
 /// The size gradation the acute method follows at most. The field's slope (gradation - 1) is how
-/// much an edge may grow per unit of distance from a feature. Steeper fields leave the repair
-/// plateaus it does not leave: of the 150 CG:SHOP instances at their default size, 129 met the
-/// bounds at 2 within 60 s, and of the 21 misses (all exterior instances, with strips and narrow
-/// sectors) 13 at 1.7 and all at 1.5 and 1.4; at 3, Constrained_Sweden started with 5,733 of
-/// 6,280 triangles bad.
+/// much an edge may grow per unit of distance from a feature, and steeper fields lead the repair
+/// into plateaus it does not escape: of the 150 CG:SHOP instances at their default size, 129 met
+/// the bounds at 2 within 60 s; of the 21 misses (all exterior instances, with strips and narrow
+/// sectors) 13 met them at 1.7 and all 21 at 1.5 and 1.4. At 3, Constrained_Sweden started with
+/// 5,733 of its 6,280 triangles bad.
 constexpr double kMaxAcuteGradation = 1.5;
-/// Restart k also halves k times the gradation's excess over the default, never below the
-/// default: a steep gradation's plateaus come from where sizes change fast (square_with_crack at
-/// --gradation 1.7-2: three small triangles at a wall corner between edges three times longer).
-constexpr double kDefaultGradation = 1.3;
+
+/// Restart k's gradation: the excess over the default halved k times, never below the default.
+/// A steep gradation's plateaus come from where sizes change fast, which another seed alone keeps
+/// (square_with_crack at 1.5-2: a 28.8-degree triangle at a corner of its slot, three small
+/// triangles between edges three times longer, with every seed).
 double restart_gradation(double gradation, int k) {
   if (gradation <= kDefaultGradation) return gradation;
   return std::max(kDefaultGradation, 1.0 + (gradation - 1.0) * std::pow(0.5, k));

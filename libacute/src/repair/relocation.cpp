@@ -64,7 +64,7 @@ class CachedStar {
   /// than the min, and that does not change as the vertex moves. Before energy().
   void load_min_exemptions(const Mesh& mesh, double min_deg, const std::vector<bool>& forced) {
     for (int i = 0; i < n_; ++i) {
-      Face& f = i < kInline ? faces_[i] : overflow_[static_cast<std::size_t>(i - kInline)];
+      Face& f = face(i);
       const bool forced_corner[3] = {forced0_, f.forced1, f.forced2};
       const VertexHandle corner[3] = {vh_, f.v1, f.v2};
       for (int k = 0; k < 3; ++k) f.min_applies[k] = !(forced_corner[k] && min_exempt_corner(mesh, corner[k], f.fh, min_deg, forced));
@@ -141,6 +141,7 @@ class CachedStar {
   /// Stars up to kInline faces (all but rare hubs) live in the object: no allocation per move.
   static constexpr int kInline = 32;
   const Face& face(int i) const { return i < kInline ? faces_[i] : overflow_[static_cast<std::size_t>(i - kInline)]; }
+  Face& face(int i) { return i < kInline ? faces_[i] : overflow_[static_cast<std::size_t>(i - kInline)]; }
 
   VertexHandle vh_;
   int n_ = 0;
