@@ -202,16 +202,19 @@ TEST(MeshDomain, a_stalled_repair_restarts_from_another_seed_and_meets_the_bound
 // A steep size gradation leaves plateaus where sizes change fast: at --gradation 1.5-2
 // square_with_crack kept one or two 28.8-degree triangles at a corner of its 1e-4 slot (three small
 // triangles between edges three times longer), whatever the seed. Restarts now grade more gently,
-// down to the default (about 5 s).
+// down to the default (about 5 s). Asked for 3, the run is capped to 1.5, and the note saying so
+// stays when a restart's mesh replaces the first run's.
 TEST(MeshDomain, a_steep_gradation_that_stalls_restarts_more_gently_graded_and_meets_the_bounds) {
   const Domain domain = io::read_domain(std::string(acute::test::meshes_dir()) + "/square_with_crack.poly");
   MeshOptions options;
   options.target_vertices = 1000;
-  options.gradation = 1.5;
+  options.gradation = 3;
   const MeshResult r = generate_mesh(domain, options);
   EXPECT_EQ(r.status, MeshStatus::Ok) << r.remaining.size() << " bad triangles left";
   EXPECT_EQ(test::verify_conforms(r.mesh, domain, mesh_area(build_domain_cdt(domain))), "");
   EXPECT_TRUE(std::any_of(r.notes.begin(), r.notes.end(), [](const std::string& n) { return n.find("graded at") != std::string::npos; }));
+  ASSERT_FALSE(r.notes.empty());
+  EXPECT_EQ(r.notes.front(), "gradation 3 is steeper than the acute method follows: 1.5 used");
 }
 
 // A gradation steeper than the acute method follows is capped, and said so.

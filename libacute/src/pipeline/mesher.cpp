@@ -175,7 +175,6 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
     capped = "gradation " + format_number(options.gradation) + " is steeper than the acute method follows: " + format_number(kMaxAcuteGradation) + " used";
   }
   MeshResult best = generate_mesh_once(domain, first, stalled, 1.0, options.restarts > 0);
-  if (!capped.empty()) best.notes.insert(best.notes.begin(), capped);
   // The repair's search is local: on some domains one seed's start leads it into a plateau (a
   // few triangles that no edit improves) that another seed's start avoids. A run that stalls
   // with a few bad triangles is restarted from another seed, within what is left of the time
@@ -206,6 +205,8 @@ MeshResult generate_mesh(const Domain& domain, const MeshOptions& options) {
     }
     best.notes.push_back(what);
   }
+  // (Here: a restart's result replaces the first run's, notes and all.)
+  if (!capped.empty()) best.notes.insert(best.notes.begin(), capped);
   return best;
 }
 
